@@ -1,0 +1,74 @@
+#ifndef rupture_base_utilities_h
+#define rupture_base_utilities_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  using namespace dealii;
+
+  /**
+   * Small helpers shared by all rooms: parsing user input into functions
+   * and vectors, with error messages that name the offending entry.
+   */
+  namespace Utilities
+  {
+    /**
+     * Turn the text of a .prm entry into a vector-valued function of
+     * position and time with @p n_components components. The components are
+     * separated by ';', the variables are x, y (, z) and t, and the constant
+     * pi is known. An empty string is the zero function. @p entry_name is
+     * used in the error message.
+     */
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    parse_function(const std::string &expression,
+                   const unsigned int n_components,
+                   const std::string &entry_name);
+
+    /**
+     * Parse a comma separated list of exactly @p dim numbers into a Tensor,
+     * e.g. "0, 0, -9.81". If @p allow_single_value, a single number is
+     * used for all components. The message names @p entry_name on error.
+     */
+    template <int dim>
+    Tensor<1, dim>
+    parse_vector(const std::string &text,
+                 const std::string &entry_name,
+                 const bool         allow_single_value = false);
+
+    /**
+     * Split a comma separated list into trimmed, non-empty strings.
+     */
+    std::vector<std::string>
+    split_list(const std::string &text, const char separator = ',');
+
+    /**
+     * Parse a list of doubles. The message names @p entry_name on error.
+     */
+    std::vector<double>
+    parse_doubles(const std::string &text, const std::string &entry_name);
+
+    /**
+     * Join strings with ", " for messages like "allowed names are ...".
+     */
+    std::string
+    join(const std::vector<std::string> &items);
+
+    /**
+     * Write @p contents to @p filename through a temporary file that is
+     * renamed at the end, so a crash never leaves a half-written file.
+     */
+    void
+    write_file_atomically(const std::string &filename,
+                          const std::string &contents);
+  } // namespace Utilities
+} // namespace rupture
+
+#endif

@@ -1,0 +1,50 @@
+#ifndef rupture_output_statistics_h
+#define rupture_output_statistics_h
+
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  namespace Output
+  {
+    /**
+     * The table <output>/statistics: one row per time step, with a header
+     * that documents each column ("# 3: Kinetic energy (J)"). The file is
+     * rewritten through a temporary name so it is never half written.
+     */
+    class Statistics
+    {
+    public:
+      /**
+       * Set the column names (with units). Must be called before add_row().
+       */
+      void
+      set_columns(const std::vector<std::string> &names);
+
+      void
+      add_row(const std::vector<double> &values);
+
+      /**
+       * Write the whole table to @p filename.
+       */
+      void
+      write(const std::string &filename) const;
+
+      const std::vector<double> &
+      last_row() const;
+
+      std::size_t
+      n_rows() const
+      {
+        return rows.size();
+      }
+
+    private:
+      std::vector<std::string>         columns;
+      std::vector<std::vector<double>> rows;
+    };
+  } // namespace Output
+} // namespace rupture
+
+#endif

@@ -1,0 +1,47 @@
+#ifndef rupture_scene_box_h
+#define rupture_scene_box_h
+
+#include <rupture/scene/scene.h>
+
+#include <deal.II/base/point.h>
+
+#include <vector>
+
+namespace rupture
+{
+  namespace Scene
+  {
+    /**
+     * A rectangular box, optionally cut into horizontal layers of different
+     * material. Boundaries are named west/east (x), south/north (y, 3-D
+     * only) and bottom/top (the last coordinate, which points up). Layers
+     * are numbered from the top: material id 0 is the top layer.
+     */
+    template <int dim>
+    class Box : public Interface<dim>
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      void
+      create_coarse_mesh(parallel::distributed::Triangulation<dim>
+                           &triangulation) const override;
+
+      std::map<std::string, types::boundary_id>
+      get_boundary_names() const override;
+
+    private:
+      Point<dim>                lower_corner;
+      Point<dim>                upper_corner;
+      std::vector<unsigned int> n_cells;
+      /// Interfaces between layers, as values of the last coordinate.
+      std::vector<double> layer_interfaces;
+    };
+  } // namespace Scene
+} // namespace rupture
+
+#endif

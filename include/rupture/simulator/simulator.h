@@ -1,0 +1,205 @@
+#ifndef rupture_simulator_simulator_h
+#define rupture_simulator_simulator_h
+
+#include <rupture/material/elastic_material.h>
+#include <rupture/output/log.h>
+#include <rupture/output/statistics.h>
+#include <rupture/output/volume_output.h>
+#include <rupture/scene/boundary_conditions.h>
+#include <rupture/scene/scene.h>
+#include <rupture/solver/linear_solver.h>
+#include <rupture/time_integration/newmark.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  using namespace dealii;
+
+  /**
+   * Owns the distributed mesh, the displacement field and the state of a
+   * run, and drives the time loop. Physics (materials, scene, boundary
+   * conditions), the time integration constants, the linear solver and the
+   * output each live in their own room; this class wires them together.
+   *
+   * The displacement is an hp-field with one FESystem per side of a fault:
+   * without a fault there is one side and the field is plain FE_Q^dim.
+   * Component c of side s is stored as component s*dim + c, so the fault
+   * can later give each side its own nodes without a change here.
+   *
+   * The work is split over several files, as in ASPECT: simulator.cc (set
+   * up and time loop), assembly.cc (matrices and load vectors) and
+   * time_stepping.cc (the three schemes and the energy budget).
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    using VectorType = TrilinosWrappers::MPI::Vector;
+
+    Simulator(const MPI_Comm communicator, ParameterHandler &prm);
+    ~Simulator();
+
+    /**
+     * Declare every parameter of the program (all rooms).
+     */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    run();
+
+  private:
+    // --- set up (simulator.cc) ---
+    void
+    parse_parameters(ParameterHandler &prm);
+    void
+    make_mesh();
+    void
+    setup_dofs();
+    void
+    prepare_output_directory(ParameterHandler &prm);
+    std::vector<std::vector<double>>
+    rigid_body_modes() const;
+
+    // --- assembly (assembly.cc) ---
+    void
+    assemble_physics_matrices();
+    void
+    assemble_system_matrix(const double stiffness_factor,
+                           const double mass_factor,
+                           const double absorbing_factor);
+    void
+    assemble_load_vector(const double time, VectorType &load) const;
+    double
+    compute_highest_frequency() const;
+    double
+    compute_l2_error(const double time) const;
+
+    // --- time stepping (time_stepping.cc) ---
+    void
+    initialize_state();
+    void
+    implicit_step();
+    void
+    explicit_step();
+    void
+    quasi_static_step();
+    void
+    apply_mass(const VectorType &x, VectorType &y) const;
+    void
+    compute_damping_force(const VectorType &velocity, VectorType &y) const;
+    void
+    add_kinematic_increment(VectorType &displacement) const;
+    void
+    set_kinematic_velocity(VectorType &velocity) const;
+    void
+    update_energy(const VectorType &old_displacement,
+                  const VectorType &load,
+                  const VectorType &residual,
+                  const VectorType &damping_force);
+    void
+    check_finite(const VectorType &v, const std::string &what) const;
+
+    // --- output (simulator.cc) ---
+    void
+    write_step_output(const bool force);
+    std::vector<double>
+    statistics_row() const;
+
+    MPI_Comm                  communicator;
+    Output::Log               log;
+    ConditionalOStream        pcout;
+    mutable TimerOutput       timer;
+
+    // Parameters.
+    std::string                           output_directory;
+    bool                                  test_mode;
+    unsigned int                          n_global_refinements;
+    unsigned int                          fe_degree;
+    bool                                  use_lumped_mass;
+    double                                rayleigh_alpha;
+    double                                rayleigh_beta;
+    double                                gravity;
+    double                                output_interval;
+    unsigned int                          screen_interval;
+    TimeIntegration::Parameters           time_parameters;
+    std::unique_ptr<FunctionParser<dim>>  body_force;
+    bool                                  has_body_force;
+    std::unique_ptr<FunctionParser<dim>>  initial_displacement;
+    std::unique_ptr<FunctionParser<dim>>  initial_velocity;
+    std::unique_ptr<FunctionParser<dim>>  exact_displacement;
+
+    // Components.
+    std::unique_ptr<Scene::Interface<dim>> scene;
+    Material::ElasticMaterials             materials;
+    Scene::BoundaryConditions<dim>         boundary_conditions;
+    Solver::LinearSolver                   linear_solver;
+
+    // Discretisation.
+    parallel::distributed::Triangulation<dim> triangulation;
+    unsigned int                              n_sides;
+    hp::FECollection<dim>                     fe_collection;
+    DoFHandler<dim>                           dof_handler;
+    IndexSet                                  locally_owned_dofs;
+    IndexSet                                  locally_relevant_dofs;
+    /// Hanging-node constraints only: for the physical operators.
+    AffineConstraints<double> hanging_constraints;
+    /// Hanging nodes plus homogeneous kinematic conditions: for increments.
+    AffineConstraints<double> increment_constraints;
+    /// Locally owned kinematically constrained DoFs with their velocity.
+    std::vector<std::pair<types::global_dof_index, double>> kinematic_dofs;
+
+    // Operators. Only what the scheme needs is built.
+    TrilinosWrappers::SparseMatrix stiffness_matrix;
+    TrilinosWrappers::SparseMatrix mass_matrix;
+    TrilinosWrappers::SparseMatrix system_matrix;
+    VectorType                     lumped_mass;
+    VectorType                     absorbing_damping;
+    VectorType                     explicit_inverse_diagonal;
+    VectorType                     constant_load;
+    bool                           has_absorbing;
+
+    // State.
+    double       time;
+    double       time_step;
+    double       stable_time_step;
+    unsigned int step;
+    VectorType   displacement;
+    VectorType   velocity;
+    VectorType   acceleration;
+    /// Total force applied to the body at the current time (loads plus
+    /// reactions on kinematic boundaries) and damping force, for the energy
+    /// budget.
+    VectorType   applied_force;
+    VectorType   damping_force;
+
+    // Energy budget (J) and per-step counters.
+    double       kinetic_energy;
+    double       strain_energy;
+    double       external_work;
+    double       damping_dissipation;
+    unsigned int last_linear_iterations;
+    double       wall_time_start;
+    double       next_output_time;
+
+    std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
+    Output::Statistics                        statistics;
+  };
+} // namespace rupture
+
+#endif

@@ -1,0 +1,172 @@
+#include <rupture/base/utilities.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+namespace rupture
+{
+  namespace Utilities
+  {
+    template <int dim>
+    std::unique_ptr<FunctionParser<dim>>
+    parse_function(const std::string &expression,
+                   const unsigned int n_components,
+                   const std::string &entry_name)
+    {
+      auto function = std::make_unique<FunctionParser<dim>>(n_components);
+      std::vector<std::string> parts;
+      if (dealii::Utilities::trim(expression).empty())
+        parts.assign(n_components, "0");
+      else
+        parts = dealii::Utilities::split_string_list(expression, ';');
+
+      AssertThrow(parts.size() == n_components,
+                  ExcMessage("The entry <" + entry_name + "> has " +
+                             std::to_string(parts.size()) +
+                             " components separated by ';', but " +
+                             std::to_string(n_components) +
+                             " are needed in this dimension. Given: <" +
+                             expression + ">."));
+
+      const std::string variables =
+        (dim == 1 ? "x,t" : (dim == 2 ? "x,y,t" : "x,y,z,t"));
+      const std::map<std::string, double> constants = {
+        {"pi", numbers::PI}};
+      try
+        {
+          function->initialize(variables, parts, constants, true);
+          // Evaluate once so that errors such as unknown variables surface
+          // here rather than in the middle of a run.
+          Vector<double> value(n_components);
+          function->vector_value(Point<dim>(), value);
+        }
+      catch (...)
+        {
+          AssertThrow(false,
+                      ExcMessage(
+                        "The entry <" + entry_name +
+                        "> could not be parsed as a function: <" + expression +
+                        ">. Allowed are expressions in the variables " +
+                        variables + " and the constant pi, one per component, "
+                        "separated by ';'."));
+        }
+      return function;
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    parse_vector(const std::string &text,
+                 const std::string &entry_name,
+                 const bool         allow_single_value)
+    {
+      std::vector<double> values = parse_doubles(text, entry_name);
+      if (allow_single_value && values.size() == 1)
+        values.assign(dim, values[0]);
+      AssertThrow(values.size() == dim,
+                  ExcMessage("The entry <" + entry_name + "> needs exactly " +
+                             std::to_string(dim) +
+                             " comma separated numbers in this dimension" +
+                               (allow_single_value ? " (or a single one)" : "") +
+                               ", but "
+                             "was given <" +
+                             text + ">."));
+      Tensor<1, dim> result;
+      for (unsigned int d = 0; d < dim; ++d)
+        result[d] = values[d];
+      return result;
+    }
+
+
+
+    std::vector<std::string>
+    split_list(const std::string &text, const char separator)
+    {
+      std::vector<std::string> result;
+      for (const auto &item :
+           dealii::Utilities::split_string_list(text, separator))
+        if (!dealii::Utilities::trim(item).empty())
+          result.push_back(dealii::Utilities::trim(item));
+      return result;
+    }
+
+
+
+    std::vector<double>
+    parse_doubles(const std::string &text, const std::string &entry_name)
+    {
+      std::vector<double> values;
+      for (const auto &item : split_list(text))
+        {
+          std::size_t pos   = 0;
+          double      value = 0;
+          try
+            {
+              value = std::stod(item, &pos);
+            }
+          catch (...)
+            {
+              pos = 0;
+            }
+          AssertThrow(pos == item.size() && pos > 0,
+                      ExcMessage("The entry <" + entry_name +
+                                 "> must be a comma separated list of "
+                                 "numbers, but <" +
+                                 item + "> is not a number."));
+          values.push_back(value);
+        }
+      return values;
+    }
+
+
+
+    std::string
+    join(const std::vector<std::string> &items)
+    {
+      std::string result;
+      for (const auto &item : items)
+        result += (result.empty() ? "" : ", ") + item;
+      return result;
+    }
+
+
+
+    void
+    write_file_atomically(const std::string &filename,
+                          const std::string &contents)
+    {
+      const std::string tmp = filename + ".tmp";
+      {
+        std::ofstream out(tmp);
+        AssertThrow(out, ExcMessage("Cannot write the file <" + tmp + ">."));
+        out << contents;
+        out.close();
+        AssertThrow(out, ExcMessage("Writing <" + tmp + "> failed."));
+      }
+      AssertThrow(std::rename(tmp.c_str(), filename.c_str()) == 0,
+                  ExcMessage("Cannot rename <" + tmp + "> to <" + filename +
+                             ">."));
+    }
+
+
+
+    template std::unique_ptr<FunctionParser<2>>
+    parse_function<2>(const std::string &,
+                      const unsigned int,
+                      const std::string &);
+    template std::unique_ptr<FunctionParser<3>>
+    parse_function<3>(const std::string &,
+                      const unsigned int,
+                      const std::string &);
+    template Tensor<1, 2>
+    parse_vector<2>(const std::string &, const std::string &, const bool);
+    template Tensor<1, 3>
+    parse_vector<3>(const std::string &, const std::string &, const bool);
+  } // namespace Utilities
+} // namespace rupture

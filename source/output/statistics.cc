@@ -1,0 +1,57 @@
+#include <rupture/base/utilities.h>
+#include <rupture/output/statistics.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Output
+  {
+    void
+    Statistics::set_columns(const std::vector<std::string> &names)
+    {
+      columns = names;
+      rows.clear();
+    }
+
+
+
+    void
+    Statistics::add_row(const std::vector<double> &values)
+    {
+      Assert(values.size() == columns.size(),
+             dealii::ExcDimensionMismatch(values.size(), columns.size()));
+      rows.push_back(values);
+    }
+
+
+
+    const std::vector<double> &
+    Statistics::last_row() const
+    {
+      Assert(!rows.empty(), dealii::ExcInternalError());
+      return rows.back();
+    }
+
+
+
+    void
+    Statistics::write(const std::string &filename) const
+    {
+      std::ostringstream out;
+      for (unsigned int c = 0; c < columns.size(); ++c)
+        out << "# " << c + 1 << ": " << columns[c] << "\n";
+      out << std::setprecision(10);
+      for (const auto &row : rows)
+        {
+          for (unsigned int c = 0; c < row.size(); ++c)
+            out << (c ? " " : "") << row[c];
+          out << "\n";
+        }
+      Utilities::write_file_atomically(filename, out.str());
+    }
+  } // namespace Output
+} // namespace rupture

@@ -1,0 +1,148 @@
+#include <rupture/scene/gmsh_mesh.h>
+
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/tria.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Scene
+  {
+    template <int dim>
+    void
+    GmshMesh<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Scene");
+      prm.enter_subsection("Gmsh");
+      {
+        prm.declare_entry(
+          "Mesh file",
+          "",
+          Patterns::Anything(),
+          "Path of the Gmsh .msh file (ASCII, format 2.2 or 4.1), relative "
+          "to the directory the program is started in. Cells must be "
+          "hexahedra (quadrilaterals in 2-D). Physical tags of cells become "
+          "material ids; named physical groups of boundary faces become the "
+          "boundary names used by <Boundary conditions>.");
+      }
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    GmshMesh<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Scene");
+      prm.enter_subsection("Gmsh");
+      file_name = prm.get("Mesh file");
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      AssertThrow(!file_name.empty(),
+                  ExcMessage("<Scene/Gmsh/Mesh file> is empty; give the path "
+                             "of a .msh file."));
+      std::ifstream in(file_name);
+      AssertThrow(in.good(),
+                  ExcMessage("The mesh file <" + file_name +
+                             "> given in <Scene/Gmsh/Mesh file> is missing "
+                             "or unreadable."));
+
+      // $PhysicalNames: "n" then lines "dimension tag \"name\"".
+      boundary_names.clear();
+      std::string line;
+      while (std::getline(in, line))
+        if (dealii::Utilities::trim(line) == "$PhysicalNames")
+          {
+            unsigned int n = 0;
+            in >> n;
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                int         group_dim = 0, tag = 0;
+                std::string name;
+                in >> group_dim >> tag;
+                std::getline(in, name);
+                name = dealii::Utilities::trim(name);
+                if (name.size() >= 2 && name.front() == '"' &&
+                    name.back() == '"')
+                  name = name.substr(1, name.size() - 2);
+                AssertThrow(in, ExcMessage("The $PhysicalNames section of <" +
+                                           file_name + "> is malformed."));
+                if (group_dim == dim - 1)
+                  {
+                    AssertThrow(tag >= 0 && tag < 255,
+                                ExcMessage("The physical tag " +
+                                           std::to_string(tag) + " of <" +
+                                           name + "> in <" + file_name +
+                                           "> is not in the allowed range "
+                                           "0..254 for boundary ids."));
+                    boundary_names[name] = tag;
+                  }
+              }
+            break;
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    GmshMesh<dim>::create_coarse_mesh(
+      parallel::distributed::Triangulation<dim> &triangulation) const
+    {
+      Triangulation<dim> serial;
+      GridIn<dim>        grid_in;
+      grid_in.attach_triangulation(serial);
+      std::ifstream in(file_name);
+      try
+        {
+          grid_in.read_msh(in);
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream message;
+          e.print_info(message);
+          AssertThrow(false,
+                      ExcMessage("The mesh file <" + file_name +
+                                 "> could not be read as a Gmsh mesh of " +
+                                 (dim == 3 ? std::string("hexahedra") :
+                                             std::string("quadrilaterals")) +
+                                 ": " + message.str()));
+        }
+      AssertThrow(serial.n_active_cells() > 0,
+                  ExcMessage("The mesh file <" + file_name +
+                             "> contains no cells."));
+      AssertThrow(serial.all_reference_cells_are_hyper_cube(),
+                  ExcMessage("The mesh file <" + file_name +
+                             "> contains cells that are not hexahedra "
+                             "(quadrilaterals in 2-D); only those are "
+                             "allowed."));
+      triangulation.copy_triangulation(serial);
+    }
+
+
+
+    template <int dim>
+    std::map<std::string, types::boundary_id>
+    GmshMesh<dim>::get_boundary_names() const
+    {
+      return boundary_names;
+    }
+
+    RUPTURE_REGISTER_SCENE(GmshMesh,
+                         "gmsh",
+                         "a hexahedral mesh read from a Gmsh .msh file, with "
+                         "physical tags for materials and named physical "
+                         "groups for boundaries.")
+  
+  } // namespace Scene
+} // namespace rupture
+
+
+template class rupture::Scene::GmshMesh<2>;
+template class rupture::Scene::GmshMesh<3>;

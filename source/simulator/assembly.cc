@@ -1,0 +1,441 @@
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+
+namespace rupture
+{
+  namespace
+  {
+    /**
+     * The element stiffness and (consistent) mass matrix of linear
+     * isotropic elasticity on the cell that @p fe_values was reinit'ed on.
+     * @p u extracts the side of the displacement that lives on this cell.
+     */
+    template <int dim>
+    void
+    local_elasticity_matrices(const FEValues<dim>               &fe_values,
+                              const FEValuesExtractors::Vector &u,
+                              const Material::ElasticConstants &m,
+                              FullMatrix<double>               &k,
+                              FullMatrix<double>               *mass)
+    {
+      const unsigned int n = fe_values.dofs_per_cell;
+      k                    = 0;
+      if (mass)
+        *mass = 0;
+      std::vector<SymmetricTensor<2, dim>> eps(n);
+      std::vector<double>                  div(n);
+      std::vector<Tensor<1, dim>>          phi(n);
+      for (const unsigned int q : fe_values.quadrature_point_indices())
+        {
+          const double JxW = fe_values.JxW(q);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              eps[i] = fe_values[u].symmetric_gradient(i, q);
+              div[i] = fe_values[u].divergence(i, q);
+              phi[i] = fe_values[u].value(i, q);
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                k(i, j) += (m.lambda * div[i] * div[j] +
+                            2 * m.mu * (eps[i] * eps[j])) *
+                           JxW;
+                if (mass)
+                  (*mass)(i, j) += m.density * (phi[i] * phi[j]) * JxW;
+              }
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_physics_matrices()
+  {
+    TimerOutput::Scope t(timer, "Assemble matrices");
+    using Scheme        = TimeIntegration::Scheme;
+    const Scheme scheme = time_parameters.scheme;
+
+    const hp::QCollection<dim>     q_cells(QGauss<dim>(fe_degree + 1));
+    const hp::QCollection<dim>     q_lumped(QGaussLobatto<dim>(fe_degree + 1));
+    const hp::QCollection<dim - 1> q_faces(QGaussLobatto<dim - 1>(fe_degree + 1));
+    const hp::QCollection<dim - 1> q_load_faces(QGauss<dim - 1>(fe_degree + 1));
+    hp::FEValues<dim>     hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_gradients |
+                                  update_JxW_values);
+    hp::FEValues<dim>     hp_lumped(fe_collection,
+                                q_lumped,
+                                update_values | update_JxW_values);
+    hp::FEFaceValues<dim> hp_faces(fe_collection,
+                                   q_faces,
+                                   update_values | update_normal_vectors |
+                                     update_JxW_values);
+    hp::FEFaceValues<dim> hp_load_faces(fe_collection,
+                                        q_load_faces,
+                                        update_values | update_JxW_values);
+
+    const bool need_mass = (scheme == Scheme::implicit_newmark && !use_lumped_mass);
+    FullMatrix<double> k, mass;
+    Vector<double>     lumped, absorbing, load;
+    std::vector<types::global_dof_index> dofs;
+
+    Tensor<1, dim> g;
+    g[dim - 1] = -gravity;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &m = materials.get(cell->material_id());
+          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+          hp_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          const unsigned int   n         = fe_values.dofs_per_cell;
+          k.reinit(n, n);
+          mass.reinit(n, n);
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
+
+          local_elasticity_matrices(fe_values, u, m, k, need_mass ? &mass : nullptr);
+          hanging_constraints.distribute_local_to_global(k, dofs, stiffness_matrix);
+          if (need_mass)
+            hanging_constraints.distribute_local_to_global(mass, dofs, mass_matrix);
+
+          // Gravity: rho g.
+          load.reinit(n);
+          if (gravity != 0)
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              for (unsigned int i = 0; i < n; ++i)
+                load(i) += m.density * (g * fe_values[u].value(i, q)) *
+                           fe_values.JxW(q);
+
+          if (use_lumped_mass)
+            {
+              // Gauss-Lobatto points coincide with the nodes, so this mass
+              // is diagonal: the lumped mass.
+              hp_lumped.reinit(cell);
+              const FEValues<dim> &lv = hp_lumped.get_present_fe_values();
+              lumped.reinit(n);
+              for (const unsigned int q : lv.quadrature_point_indices())
+                for (unsigned int i = 0; i < n; ++i)
+                  lumped(i) += m.density * lv[u].value(i, q).norm_square() *
+                               lv.JxW(q);
+              hanging_constraints.distribute_local_to_global(lumped, dofs, lumped_mass);
+            }
+
+          for (const auto f : cell->face_indices())
+            {
+              if (!cell->face(f)->at_boundary())
+                continue;
+              const types::boundary_id id = cell->face(f)->boundary_id();
+              for (const auto &[traction_id, traction] : boundary_conditions.tractions)
+                if (traction_id == id)
+                  {
+                    hp_load_faces.reinit(cell, f);
+                    const FEFaceValues<dim> &fv =
+                      hp_load_faces.get_present_fe_values();
+                    for (const unsigned int q : fv.quadrature_point_indices())
+                      for (unsigned int i = 0; i < n; ++i)
+                        load(i) += (traction * fv[u].value(i, q)) * fv.JxW(q);
+                  }
+              if (has_absorbing &&
+                  std::find(boundary_conditions.absorbing.begin(),
+                            boundary_conditions.absorbing.end(),
+                            id) != boundary_conditions.absorbing.end())
+                {
+                  // Lysmer-Kuhlemeyer dashpots, lumped to the nodes: the
+                  // normal part rho vp, the tangential part rho vs. Exact
+                  // for faces normal to a coordinate axis; on oblique faces
+                  // the coupling between components is dropped.
+                  hp_faces.reinit(cell, f);
+                  const FEFaceValues<dim> &fv = hp_faces.get_present_fe_values();
+                  absorbing.reinit(n);
+                  const double zp = m.density * m.p_wave_speed();
+                  const double zs = m.density * m.s_wave_speed();
+                  for (const unsigned int q : fv.quadrature_point_indices())
+                    for (unsigned int i = 0; i < n; ++i)
+                      {
+                        const unsigned int c =
+                          cell->get_fe().system_to_component_index(i).first % dim;
+                        const double nc = fv.normal_vector(q)[c];
+                        absorbing(i) += (zp * nc * nc + zs * (1 - nc * nc)) *
+                                        fv[u].value(i, q).norm_square() *
+                                        fv.JxW(q);
+                      }
+                  hanging_constraints.distribute_local_to_global(absorbing,
+                                                                 dofs,
+                                                                 absorbing_damping);
+                }
+            }
+          hanging_constraints.distribute_local_to_global(load, dofs, constant_load);
+        }
+
+    stiffness_matrix.compress(VectorOperation::add);
+    if (need_mass)
+      mass_matrix.compress(VectorOperation::add);
+    constant_load.compress(VectorOperation::add);
+    if (use_lumped_mass)
+      lumped_mass.compress(VectorOperation::add);
+    if (has_absorbing)
+      absorbing_damping.compress(VectorOperation::add);
+
+    // The time step, and for the explicit scheme its stability check.
+    time_step = time_parameters.time_step;
+    if (scheme == Scheme::explicit_central_difference)
+      {
+        const double omega = compute_highest_frequency();
+        stable_time_step   = TimeIntegration::central_difference_stable_step(
+          omega, rayleigh_alpha, rayleigh_beta);
+        pcout << "   Stable explicit time step: " << std::setprecision(6)
+              << stable_time_step << " s (highest element frequency "
+              << omega << " rad/s)\n";
+        if (time_step == 0)
+          time_step = time_parameters.courant_fraction * stable_time_step;
+        else
+          AssertThrow(time_parameters.allow_unstable_time_step ||
+                        time_step <= stable_time_step,
+                      ExcMessage(
+                        "<Time integration/Time step> = " +
+                        std::to_string(time_step) +
+                        " s is above the stable limit of the explicit scheme "
+                        "on this mesh, " +
+                        std::to_string(stable_time_step) +
+                        " s. Allowed are steps up to that limit; set <Time "
+                        "step> = 0 to use <Courant fraction> times it, or "
+                        "use the implicit scheme."));
+      }
+    const double n_steps =
+      std::ceil(time_parameters.end_time / time_step - 1e-9);
+    time_step = time_parameters.end_time / n_steps;
+
+    if (scheme == Scheme::explicit_central_difference)
+      {
+        // (M (1 + gamma dt alpha) + gamma dt C_abs) a = r, diagonal.
+        const double g = time_parameters.gamma * time_step;
+        explicit_inverse_diagonal.reinit(locally_owned_dofs, communicator);
+        for (const auto i : locally_owned_dofs)
+          {
+            double d = lumped_mass(i) * (1 + g * rayleigh_alpha);
+            if (has_absorbing)
+              d += g * absorbing_damping(i);
+            explicit_inverse_diagonal(i) =
+              (increment_constraints.is_constrained(i) || d == 0) ? 0. : 1. / d;
+          }
+        explicit_inverse_diagonal.compress(VectorOperation::insert);
+      }
+    else if (scheme == Scheme::implicit_newmark)
+      {
+        // Effective stiffness of eq. 14: K + a0 M + a1 C, with
+        // C = alpha M + beta K + C_absorbing.
+        const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
+                                                     time_parameters.gamma,
+                                                     time_step);
+        assemble_system_matrix(1 + a.a1 * rayleigh_beta,
+                               a.a0 + a.a1 * rayleigh_alpha,
+                               a.a1);
+      }
+    else
+      assemble_system_matrix(1, 0, 0);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_system_matrix(const double stiffness_factor,
+                                         const double mass_factor,
+                                         const double absorbing_factor)
+  {
+    TimerOutput::Scope t(timer, "Assemble system matrix");
+    system_matrix = 0;
+    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>          hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_gradients |
+                                  update_JxW_values);
+    FullMatrix<double>                   k, mass;
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &m = materials.get(cell->material_id());
+          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+          hp_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          const unsigned int   n         = fe_values.dofs_per_cell;
+          k.reinit(n, n);
+          mass.reinit(n, n);
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
+          local_elasticity_matrices(
+            fe_values, u, m, k, (mass_factor != 0 && !use_lumped_mass) ? &mass : nullptr);
+          k *= stiffness_factor;
+          if (mass_factor != 0 && !use_lumped_mass)
+            k.add(mass_factor, mass);
+          increment_constraints.distribute_local_to_global(k, dofs, system_matrix);
+        }
+    system_matrix.compress(VectorOperation::add);
+
+    // Diagonal parts: lumped mass and absorbing dashpots.
+    if ((mass_factor != 0 && use_lumped_mass) || (absorbing_factor != 0 && has_absorbing))
+      {
+        for (const auto i : locally_owned_dofs)
+          if (!increment_constraints.is_constrained(i))
+            {
+              double d = 0;
+              if (mass_factor != 0 && use_lumped_mass)
+                d += mass_factor * lumped_mass(i);
+              if (absorbing_factor != 0 && has_absorbing)
+                d += absorbing_factor * absorbing_damping(i);
+              system_matrix.add(i, i, d);
+            }
+        system_matrix.compress(VectorOperation::add);
+      }
+
+    linear_solver.initialize(system_matrix,
+                             rigid_body_modes(),
+                             true,
+                             fe_degree > 1);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_load_vector(const double time, VectorType &load) const
+  {
+    load = constant_load;
+    if (!has_body_force)
+      return;
+    TimerOutput::Scope t(timer, "Assemble loads");
+    body_force->set_time(time);
+    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>          hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    Vector<double>                       local, f(dim);
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+          hp_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          const unsigned int   n         = fe_values.dofs_per_cell;
+          local.reinit(n);
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              body_force->vector_value(fe_values.quadrature_point(q), f);
+              Tensor<1, dim> force;
+              for (unsigned int d = 0; d < dim; ++d)
+                force[d] = f(d);
+              for (unsigned int i = 0; i < n; ++i)
+                local(i) += (force * fe_values[u].value(i, q)) * fe_values.JxW(q);
+            }
+          hanging_constraints.distribute_local_to_global(local, dofs, load);
+        }
+    load.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::compute_highest_frequency() const
+  {
+    // Irons' bound: the highest frequency of the assembled system is below
+    // the highest of the elements, each with its lumped mass. So the step
+    // computed from it is safe on any mesh.
+    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
+    const hp::QCollection<dim> q_lumped(QGaussLobatto<dim>(fe_degree + 1));
+    hp::FEValues<dim>          hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_gradients |
+                                  update_JxW_values);
+    hp::FEValues<dim> hp_lumped(fe_collection,
+                                q_lumped,
+                                update_values | update_JxW_values);
+    FullMatrix<double> k;
+    double             omega2_max = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &m = materials.get(cell->material_id());
+          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+          hp_values.reinit(cell);
+          hp_lumped.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          const FEValues<dim> &lv        = hp_lumped.get_present_fe_values();
+          const unsigned int   n         = fe_values.dofs_per_cell;
+          k.reinit(n, n);
+          local_elasticity_matrices(fe_values, u, m, k, nullptr);
+          std::vector<double> mass(n, 0.);
+          for (const unsigned int q : lv.quadrature_point_indices())
+            for (unsigned int i = 0; i < n; ++i)
+              mass[i] += m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+          LAPACKFullMatrix<double> a(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < n; ++j)
+              a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
+          a.compute_eigenvalues();
+          for (unsigned int i = 0; i < n; ++i)
+            omega2_max = std::max(omega2_max, a.eigenvalue(i).real());
+        }
+    omega2_max = dealii::Utilities::MPI::max(omega2_max, communicator);
+    return std::sqrt(omega2_max);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::compute_l2_error(const double time) const
+  {
+    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
+    u_ghost = displacement;
+    exact_displacement->set_time(time);
+    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 2));
+    hp::FEValues<dim>          hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    double                      error = 0;
+    std::vector<Tensor<1, dim>> uh;
+    Vector<double>              exact(dim);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+          hp_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          uh.resize(fe_values.n_quadrature_points);
+          fe_values[u].get_function_values(u_ghost, uh);
+          for (const unsigned int q : fe_values.quadrature_point_indices())
+            {
+              exact_displacement->vector_value(fe_values.quadrature_point(q),
+                                               exact);
+              for (unsigned int d = 0; d < dim; ++d)
+                error += std::pow(uh[q][d] - exact(d), 2) * fe_values.JxW(q);
+            }
+        }
+    return std::sqrt(dealii::Utilities::MPI::sum(error, communicator));
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture

@@ -1,0 +1,275 @@
+#include <rupture/base/utilities.h>
+#include <rupture/simulator/run.h>
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace rupture
+{
+  namespace
+  {
+    const char *usage =
+      "Usage: rupture [options] file.prm\n"
+      "       mpirun -np N rupture [options] file.prm\n"
+      "\n"
+      "Simulates earthquake rupture on a frictional fault in an elastic body,\n"
+      "as set up in the parameter file file.prm.\n"
+      "\n"
+      "Options:\n"
+      "  -h, --help                 print this message and exit\n"
+      "  --print-parameters [FORMAT]\n"
+      "                             print every parameter with its documentation\n"
+      "                             and default, and exit. FORMAT is 'markdown'\n"
+      "                             (the default; the source of doc/parameters.md)\n"
+      "                             or 'prm' (a complete parameter file)\n"
+      "  --set \"Section/Entry=value\"\n"
+      "                             override one entry of file.prm; may be\n"
+      "                             repeated, e.g. for parameter sweeps:\n"
+      "                             --set \"Time integration/End time=2\"\n";
+
+    /**
+     * Parameter names are stored mangled in the property tree.
+     */
+    std::string
+    demangle(const std::string &s)
+    {
+      std::string result;
+      for (std::size_t i = 0; i < s.size(); ++i)
+        if (s[i] == '_' && i + 2 < s.size() &&
+            std::isxdigit(s[i + 1]) && std::isxdigit(s[i + 2]))
+          {
+            result += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          result += s[i];
+      return result;
+    }
+
+    void
+    print_markdown(const boost::property_tree::ptree &tree,
+                   const std::string                 &path,
+                   std::ostream                      &out)
+    {
+      // Entries first, then subsections.
+      bool any_entry = false;
+      for (const auto &[key, node] : tree)
+        if (node.get_optional<std::string>("value"))
+          {
+            if (!any_entry)
+              out << "\n## " << (path.empty() ? "Global parameters" : path)
+                  << "\n\n";
+            any_entry = true;
+            out << "### `" << demangle(key) << "`\n\n"
+                << "- Default: `" << node.get<std::string>("default_value")
+                << "`\n"
+                << "- Allowed: " << node.get<std::string>("pattern_description")
+                << "\n\n"
+                << node.get<std::string>("documentation") << "\n\n";
+          }
+      for (const auto &[key, node] : tree)
+        if (!node.get_optional<std::string>("value"))
+          print_markdown(node,
+                         (path.empty() ? "" : path + " / ") + demangle(key),
+                         out);
+    }
+
+    /**
+     * The text of a deal.II exception without the source location.
+     */
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      std::string text = s.str();
+      // Collapse the indentation deal.II puts in front of lines.
+      std::string result;
+      for (const auto &line : dealii::Utilities::split_string_list(text, '\n'))
+        if (!dealii::Utilities::trim(line).empty())
+          result += (result.empty() ? "" : "\n       ") +
+                    dealii::Utilities::trim(line);
+      return result;
+    }
+
+    void
+    apply_override(ParameterHandler &prm, const std::string &assignment)
+    {
+      const auto equal = assignment.find('=');
+      AssertThrow(equal != std::string::npos,
+                  ExcMessage("The option --set \"" + assignment +
+                             "\" has no '='. Allowed is --set "
+                             "\"Section/Subsection/Entry=value\"."));
+      const std::vector<std::string> path = dealii::Utilities::split_string_list(
+        assignment.substr(0, equal), '/');
+      const std::string value =
+        dealii::Utilities::trim(assignment.substr(equal + 1));
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        prm.enter_subsection(path[i]);
+      try
+        {
+          prm.set(path.back(), value);
+        }
+      catch (const ExceptionBase &e)
+        {
+          for (unsigned int i = 0; i + 1 < path.size(); ++i)
+            prm.leave_subsection();
+          AssertThrow(false,
+                      ExcMessage("The option --set \"" + assignment +
+                                 "\" was not accepted: " + message_of(e) +
+                                 " See 'rupture --print-parameters' for the "
+                                 "entries and their allowed values."));
+        }
+      for (unsigned int i = 0; i + 1 < path.size(); ++i)
+        prm.leave_subsection();
+    }
+
+    template <int dim>
+    void
+    run_simulation(ParameterHandler &prm, const MPI_Comm communicator)
+    {
+      Simulator<dim> simulator(communicator, prm);
+      simulator.run();
+    }
+  } // namespace
+
+
+
+  int
+  run_program(const std::vector<std::string> &arguments,
+              const MPI_Comm                  communicator)
+  {
+    const bool root = (dealii::Utilities::MPI::this_mpi_process(communicator) == 0);
+    try
+      {
+        std::string              parameter_file;
+        std::string              print_format;
+        std::vector<std::string> overrides;
+        for (unsigned int i = 0; i < arguments.size(); ++i)
+          {
+            const std::string &arg = arguments[i];
+            if (arg == "-h" || arg == "--help")
+              {
+                if (root)
+                  std::cout << usage;
+                return 0;
+              }
+            else if (arg == "--print-parameters")
+              {
+                print_format = "markdown";
+                if (i + 1 < arguments.size() &&
+                    (arguments[i + 1] == "markdown" || arguments[i + 1] == "prm"))
+                  print_format = arguments[++i];
+              }
+            else if (arg == "--set")
+              {
+                AssertThrow(i + 1 < arguments.size(),
+                            ExcMessage("The option --set needs an argument "
+                                       "\"Section/Entry=value\"."));
+                overrides.push_back(arguments[++i]);
+              }
+            else if (arg.rfind("--set=", 0) == 0)
+              overrides.push_back(arg.substr(6));
+            else if (!arg.empty() && arg[0] == '-')
+              {
+                AssertThrow(false,
+                            ExcMessage("Unknown option <" + arg +
+                                       ">. Allowed are --help, "
+                                       "--print-parameters and --set; see "
+                                       "'rupture --help'."));
+              }
+            else
+              {
+                AssertThrow(parameter_file.empty(),
+                            ExcMessage("More than one parameter file given (<" +
+                                       parameter_file + "> and <" + arg +
+                                       ">); rupture runs one at a time."));
+                parameter_file = arg;
+              }
+          }
+
+        ParameterHandler prm;
+        Simulator<2>::declare_parameters(prm);
+
+        if (!print_format.empty())
+          {
+            if (root)
+              {
+                if (print_format == "prm")
+                  prm.print_parameters(std::cout, ParameterHandler::PRM);
+                else
+                  {
+                    std::ostringstream json;
+                    prm.print_parameters(json, ParameterHandler::JSON);
+                    boost::property_tree::ptree tree;
+                    std::istringstream          in(json.str());
+                    boost::property_tree::read_json(in, tree);
+                    std::cout << "# rupture parameter reference\n\n"
+                              << "Generated by `rupture --print-parameters`; "
+                                 "do not edit by hand. Every entry lists its "
+                                 "default, the values it accepts and its "
+                                 "meaning with units.\n";
+                    print_markdown(tree, "", std::cout);
+                  }
+              }
+            return 0;
+          }
+
+        AssertThrow(!parameter_file.empty(),
+                    ExcMessage("No parameter file given. Run 'rupture "
+                               "file.prm'; see 'rupture --help'."));
+        {
+          std::ifstream test(parameter_file);
+          AssertThrow(test.good(),
+                      ExcMessage("The parameter file <" + parameter_file +
+                                 "> does not exist or cannot be read."));
+        }
+        try
+          {
+            prm.parse_input(parameter_file, "", false, true);
+          }
+        catch (const ExceptionBase &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(message_of(e) +
+                                   " See 'rupture --print-parameters' for the "
+                                   "entries and their allowed values."));
+          }
+        for (const auto &assignment : overrides)
+          apply_override(prm, assignment);
+
+        const unsigned int dimension = prm.get_integer("Dimension");
+        if (dimension == 2)
+          run_simulation<2>(prm, communicator);
+        else
+          run_simulation<3>(prm, communicator);
+      }
+    catch (const ExceptionBase &e)
+      {
+        if (root)
+          std::cerr << "\nError: " << message_of(e) << std::endl;
+        return 1;
+      }
+    catch (const std::exception &e)
+      {
+        if (root)
+          std::cerr << "\nError: " << e.what() << std::endl;
+        return 1;
+      }
+    catch (...)
+      {
+        if (root)
+          std::cerr << "\nError: an unknown exception was raised." << std::endl;
+        return 1;
+      }
+    return 0;
+  }
+} // namespace rupture

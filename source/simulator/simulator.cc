@@ -1,0 +1,590 @@
+#include <rupture/base/utilities.h>
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+namespace rupture
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the run: 2 (plane strain) or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Directory for all results: log.txt, parameters.prm, "
+                      "statistics, solution.pvd with solution/*.vtu. It is "
+                      "created if missing; files of an earlier run in it are "
+                      "overwritten only once the new input has been checked.");
+    prm.declare_entry("Test mode",
+                      "false",
+                      Patterns::Bool(),
+                      "Leave out timings, iteration counts and other output "
+                      "that changes from machine to machine, so that the "
+                      "screen output can be compared in the test suite.");
+
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Initial global refinement",
+                        "0",
+                        Patterns::Integer(0, 12),
+                        "Number of times each coarse cell of the scene is "
+                        "refined (each halves the cell size).");
+      prm.declare_entry("Polynomial degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Degree of the FE_Q displacement elements: 1 "
+                        "(trilinear, the paper's) or 2.");
+      prm.declare_entry("Mass matrix",
+                        "consistent",
+                        Patterns::Selection("consistent|lumped"),
+                        "Mass matrix of the implicit scheme. The explicit "
+                        "scheme always uses the lumped (diagonal) mass from "
+                        "Gauss-Lobatto quadrature.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Damping");
+    {
+      prm.declare_entry("Rayleigh alpha",
+                        "0",
+                        Patterns::Double(0),
+                        "Mass-proportional coefficient (1/s) of the Rayleigh "
+                        "damping C = alpha M + beta K of the paper's eq. 13.");
+      prm.declare_entry("Rayleigh beta",
+                        "0",
+                        Patterns::Double(0),
+                        "Stiffness-proportional coefficient (s) of the "
+                        "Rayleigh damping.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    {
+      prm.declare_entry("Gravity",
+                        "0",
+                        Patterns::Double(0),
+                        "Gravitational acceleration (m/s^2), pointing in the "
+                        "negative direction of the last coordinate. The body "
+                        "force is density times gravity.");
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "An extra body force (N/m^3) as a function of x, y "
+                        "(, z) and t, one expression per component separated "
+                        "by ';'. Empty for none. Used for manufactured "
+                        "solutions.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial conditions");
+    {
+      prm.declare_entry("Displacement",
+                        "",
+                        Patterns::Anything(),
+                        "Initial displacement (m) as a function of x, y (, "
+                        "z), one expression per component separated by ';'. "
+                        "Empty for zero.");
+      prm.declare_entry("Velocity",
+                        "",
+                        Patterns::Anything(),
+                        "Initial velocity (m/s), in the same form. Empty for "
+                        "zero.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Verification");
+    {
+      prm.declare_entry("Exact displacement",
+                        "",
+                        Patterns::Anything(),
+                        "The exact displacement (m) as a function of x, y (, "
+                        "z) and t, if known; the L2 error against it is then "
+                        "reported at every step. Empty for none.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Output interval",
+                        "0",
+                        Patterns::Double(),
+                        "Simulated time (s) between volume outputs for "
+                        "ParaView. 0 writes every step; a negative value "
+                        "writes none.");
+      prm.declare_entry("Screen output interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Print the step line every this many steps.");
+    }
+    prm.leave_subsection();
+
+    Scene::declare_parameters(prm);
+    Material::ElasticMaterials::declare_parameters(prm);
+    Scene::BoundaryConditions<dim>::declare_parameters(prm);
+    TimeIntegration::Parameters::declare_parameters(prm);
+    Solver::LinearSolver::declare_parameters(prm);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::Simulator(const MPI_Comm communicator, ParameterHandler &prm)
+    : communicator(communicator)
+    , pcout(log.stream(),
+            dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+    , timer(communicator, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , triangulation(communicator,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::smoothing_on_refinement |
+                      Triangulation<dim>::smoothing_on_coarsening))
+    , n_sides(1)
+    , has_absorbing(false)
+    , time(0)
+    , time_step(0)
+    , stable_time_step(0)
+    , step(0)
+    , kinetic_energy(0)
+    , strain_energy(0)
+    , external_work(0)
+    , damping_dissipation(0)
+    , last_linear_iterations(0)
+    , wall_time_start(0)
+    , next_output_time(0)
+  {
+    parse_parameters(prm);
+
+    pcout << "rupture: " << dim << "-D, scheme " << time_parameters.scheme_name()
+          << ", " << dealii::Utilities::MPI::n_mpi_processes(communicator)
+          << " MPI rank(s)\n";
+
+    make_mesh();
+    setup_dofs();
+    assemble_physics_matrices();
+
+    // Everything that can reject the input has run; only now is the output
+    // directory touched, so a bad input never destroys earlier results.
+    prepare_output_directory(prm);
+  }
+
+
+
+  template <int dim>
+  Simulator<dim>::~Simulator()
+  {
+    dof_handler.clear();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    output_directory = prm.get("Output directory");
+    test_mode        = prm.get_bool("Test mode");
+
+    prm.enter_subsection("Discretization");
+    n_global_refinements = prm.get_integer("Initial global refinement");
+    fe_degree            = prm.get_integer("Polynomial degree");
+    use_lumped_mass          = (prm.get("Mass matrix") == "lumped");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Damping");
+    rayleigh_alpha = prm.get_double("Rayleigh alpha");
+    rayleigh_beta  = prm.get_double("Rayleigh beta");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    gravity        = prm.get_double("Gravity");
+    has_body_force = !dealii::Utilities::trim(prm.get("Body force")).empty();
+    body_force     = Utilities::parse_function<dim>(prm.get("Body force"),
+                                                dim,
+                                                "Loads/Body force");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial conditions");
+    initial_displacement =
+      Utilities::parse_function<dim>(prm.get("Displacement"),
+                                     dim,
+                                     "Initial conditions/Displacement");
+    initial_velocity = Utilities::parse_function<dim>(
+      prm.get("Velocity"), dim, "Initial conditions/Velocity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Verification");
+    if (!dealii::Utilities::trim(prm.get("Exact displacement")).empty())
+      exact_displacement =
+        Utilities::parse_function<dim>(prm.get("Exact displacement"),
+                                       dim,
+                                       "Verification/Exact displacement");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_interval = prm.get_double("Output interval");
+    screen_interval = prm.get_integer("Screen output interval");
+    prm.leave_subsection();
+
+    time_parameters.parse_parameters(prm);
+    if (time_parameters.scheme ==
+        TimeIntegration::Scheme::explicit_central_difference)
+      use_lumped_mass = true;
+    materials.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+
+    scene = Scene::create<dim>(prm);
+    boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
+    has_absorbing = !boundary_conditions.absorbing.empty();
+    AssertThrow(!(has_absorbing && time_parameters.scheme ==
+                                     TimeIntegration::Scheme::quasi_static),
+                ExcMessage("<Boundary conditions/Absorbing> is set, but "
+                           "absorbing boundaries act on velocities and have "
+                           "no meaning in a quasi-static run. Remove them "
+                           "or choose a dynamic scheme."));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::make_mesh()
+  {
+    TimerOutput::Scope t(timer, "Set up mesh");
+    scene->create_coarse_mesh(triangulation);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      materials.check_material_id(cell->material_id());
+    triangulation.refine_global(n_global_refinements);
+
+    pcout << "   Mesh: " << triangulation.n_global_active_cells()
+          << " cells, " << triangulation.n_vertices() << " coarse-level "
+          << "vertices per rank\n"
+          << materials.summary();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_dofs()
+  {
+    TimerOutput::Scope t(timer, "Set up DoFs");
+
+    fe_collection = hp::FECollection<dim>();
+    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(fe_degree), dim));
+    dof_handler.reinit(triangulation);
+    dof_handler.distribute_dofs(fe_collection);
+
+    locally_owned_dofs = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+
+    hanging_constraints.clear();
+    hanging_constraints.reinit(locally_relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+
+    // Kinematic boundary conditions: collect the constrained DoFs of each
+    // named boundary (first condition wins where boundaries meet).
+    increment_constraints.clear();
+    increment_constraints.reinit(locally_relevant_dofs);
+    kinematic_dofs.clear();
+    std::vector<types::global_dof_index> face_dofs;
+    for (const auto &bc : boundary_conditions.kinematic)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial())
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == bc.id)
+              {
+                const auto &fe = cell->get_fe();
+                face_dofs.resize(fe.n_dofs_per_face(f));
+                cell->face(f)->get_dof_indices(face_dofs,
+                                               cell->active_fe_index());
+                for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                  {
+                    const unsigned int c =
+                      fe.face_system_to_component_index(i, f).first % dim;
+                    const auto dof = face_dofs[i];
+                    if (!bc.components[c] ||
+                        increment_constraints.is_constrained(dof) ||
+                        hanging_constraints.is_constrained(dof))
+                      continue;
+                    increment_constraints.add_line(dof);
+                    if (locally_owned_dofs.is_element(dof))
+                      kinematic_dofs.emplace_back(dof, bc.velocity[c]);
+                  }
+              }
+    increment_constraints.merge(
+      hanging_constraints,
+      AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
+    increment_constraints.close();
+
+    DynamicSparsityPattern dsp(locally_relevant_dofs);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_constraints, true);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               locally_owned_dofs,
+                                               communicator,
+                                               locally_relevant_dofs);
+
+    using Scheme = TimeIntegration::Scheme;
+    const Scheme scheme = time_parameters.scheme;
+    // A scene pays only for what it uses: no mass matrix without inertia or
+    // with lumping, no system matrix (hence no solver) in explicit runs.
+    stiffness_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    if (scheme == Scheme::implicit_newmark && !use_lumped_mass)
+      mass_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    else
+      mass_matrix.clear();
+    if (scheme != Scheme::explicit_central_difference)
+      system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    else
+      system_matrix.clear();
+
+    for (VectorType *v : {&displacement,
+                          &velocity,
+                          &acceleration,
+                          &applied_force,
+                          &damping_force,
+                          &constant_load})
+      v->reinit(locally_owned_dofs, communicator);
+    if (use_lumped_mass)
+      lumped_mass.reinit(locally_owned_dofs, communicator);
+    if (has_absorbing)
+      absorbing_damping.reinit(locally_owned_dofs, communicator);
+
+    pcout << "   Degrees of freedom: " << dof_handler.n_dofs() << "\n";
+  }
+
+
+
+  template <int dim>
+  std::vector<std::vector<double>>
+  Simulator<dim>::rigid_body_modes() const
+  {
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(
+      hp::MappingCollection<dim>(MappingQ1<dim>()), dof_handler, support_points);
+
+    std::vector<unsigned int> component(locally_owned_dofs.n_elements(), 0);
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (locally_owned_dofs.is_element(dofs[i]))
+              component[locally_owned_dofs.index_within_set(dofs[i])] =
+                cell->get_fe().system_to_component_index(i).first % dim;
+        }
+
+    const unsigned int n_modes = dim * (dim + 1) / 2;
+    std::vector<std::vector<double>> modes(
+      n_modes, std::vector<double>(locally_owned_dofs.n_elements(), 0.));
+    unsigned int k = 0;
+    for (const auto dof : locally_owned_dofs)
+      {
+        const unsigned int c = component[k];
+        const Point<dim>  &x = support_points[dof];
+        modes[c][k]          = 1;
+        if (dim == 2)
+          modes[2][k] = (c == 0 ? -x[1] : x[0]);
+        else
+          {
+            // Rotations about the z, x and y axes.
+            const unsigned int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+            (void)c1;
+            (void)c2;
+            const double rz[3] = {-x[1], x[0], 0};
+            const double rx[3] = {0, -x[2], x[1]};
+            const double ry[3] = {x[2], 0, -x[0]};
+            modes[3][k] = rz[c];
+            modes[4][k] = rx[c];
+            modes[5][k] = ry[c];
+          }
+        ++k;
+      }
+    return modes;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prepare_output_directory(ParameterHandler &prm)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(output_directory + "/solution",
+                                            error);
+        AssertThrow(!error,
+                    ExcMessage("The output directory <" + output_directory +
+                               "> cannot be created: " + error.message()));
+        log.attach_file(output_directory + "/log.txt");
+        std::ostringstream parameters;
+        prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+        Utilities::write_file_atomically(output_directory + "/parameters.prm",
+                                         parameters.str());
+      }
+    MPI_Barrier(communicator);
+    volume_output = std::make_unique<Output::VolumeOutput<dim>>(
+      output_directory, materials, communicator);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    wall_time_start = MPI_Wtime();
+    initialize_state();
+
+    std::vector<std::string> columns = {"Time step number",
+                                        "Time (s)",
+                                        "Time step size (s)",
+                                        "Linear solver iterations",
+                                        "Kinetic energy (J)",
+                                        "Strain energy (J)",
+                                        "Work of loads and boundary reactions (J)",
+                                        "Energy dissipated by damping and "
+                                        "absorbing boundaries (J)",
+                                        "Energy balance error (J): kinetic + "
+                                        "strain + dissipated - work",
+                                        "Wall time (s)"};
+    if (exact_displacement)
+      columns.emplace_back("L2 error of the displacement (m m^(dim/2))");
+    statistics.set_columns(columns);
+    statistics.add_row(statistics_row());
+    write_step_output(true);
+
+    const unsigned int n_steps = static_cast<unsigned int>(
+      std::ceil(time_parameters.end_time / time_step - 1e-9));
+    pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
+          << n_steps << " steps to t = " << time_parameters.end_time << " s\n";
+
+    while (step < n_steps)
+      {
+        ++step;
+        time = (step == n_steps) ? time_parameters.end_time : step * time_step;
+
+        switch (time_parameters.scheme)
+          {
+            case TimeIntegration::Scheme::implicit_newmark:
+              implicit_step();
+              break;
+            case TimeIntegration::Scheme::explicit_central_difference:
+              explicit_step();
+              break;
+            case TimeIntegration::Scheme::quasi_static:
+              quasi_static_step();
+              break;
+          }
+        check_finite(displacement, "displacement");
+        statistics.add_row(statistics_row());
+
+        if (step % screen_interval == 0 || step == n_steps)
+          {
+            pcout << "*** Step " << step << ": t = " << std::scientific
+                  << std::setprecision(4) << time << " s, dt = "
+                  << std::setprecision(2) << time_step << " s";
+            if (!test_mode)
+              {
+                const double elapsed = MPI_Wtime() - wall_time_start;
+                const double left = elapsed / step * (n_steps - step);
+                pcout << "  [" << std::fixed << std::setprecision(0)
+                      << 100. * step / n_steps << "%, "
+                      << std::setprecision(1) << left << " s left]";
+                if (time_parameters.scheme !=
+                    TimeIntegration::Scheme::explicit_central_difference)
+                  pcout << "\n    Linear solver: " << last_linear_iterations
+                        << " iterations";
+              }
+            pcout << std::defaultfloat << std::endl;
+          }
+        write_step_output(step == n_steps);
+      }
+
+    statistics.write(output_directory + "/statistics");
+
+    const auto &last = statistics.last_row();
+    pcout << std::scientific << std::setprecision(6)
+          << "Final state at t = " << time << " s:\n"
+          << "   Kinetic energy       " << last[4] << " J\n"
+          << "   Strain energy        " << last[5] << " J\n"
+          << "   Work of loads        " << last[6] << " J\n"
+          << "   Dissipated energy    " << last[7] << " J\n"
+          << "   Max |displacement|   " << displacement.linfty_norm() << " m\n";
+    if (exact_displacement)
+      pcout << "   L2 error             " << last.back() << "\n";
+    pcout << std::defaultfloat;
+    if (!test_mode)
+      {
+        pcout << "   Energy balance error " << last[8] << " J\n";
+        timer.print_summary();
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  Simulator<dim>::statistics_row() const
+  {
+    std::vector<double> row = {
+      static_cast<double>(step),
+      time,
+      time_step,
+      static_cast<double>(last_linear_iterations),
+      kinetic_energy,
+      strain_energy,
+      external_work,
+      damping_dissipation,
+      kinetic_energy + strain_energy + damping_dissipation - external_work,
+      test_mode ? 0. : MPI_Wtime() - wall_time_start};
+    if (exact_displacement)
+      row.push_back(compute_l2_error(time));
+    return row;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_step_output(const bool force)
+  {
+    if (output_interval < 0)
+      return;
+    if (!force && time < next_output_time - 1e-9 * time_step)
+      return;
+    TimerOutput::Scope t(timer, "Output");
+    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
+    VectorType v_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
+    u_ghost = displacement;
+    v_ghost = velocity;
+    volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
+    statistics.write(output_directory + "/statistics");
+    next_output_time = time + output_interval;
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture

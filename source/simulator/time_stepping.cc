@@ -1,0 +1,431 @@
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace rupture
+{
+  namespace
+  {
+    /**
+     * The consistent mass matrix restricted to the unconstrained DoFs, with
+     * the identity on constrained ones: to compute initial accelerations.
+     */
+    struct ConstrainedMass
+    {
+      const TrilinosWrappers::SparseMatrix &mass;
+      const AffineConstraints<double>      &constraints;
+      const IndexSet                       &owned;
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        mass.vmult(dst, src);
+        for (const auto i : owned)
+          if (constraints.is_constrained(i))
+            dst(i) = src(i);
+        dst.compress(VectorOperation::insert);
+      }
+    };
+
+    struct DiagonalPreconditioner
+    {
+      TrilinosWrappers::MPI::Vector inverse;
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        dst = src;
+        dst.scale(inverse);
+      }
+    };
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_mass(const VectorType &x, VectorType &y) const
+  {
+    if (use_lumped_mass)
+      {
+        y = x;
+        y.scale(lumped_mass);
+      }
+    else
+      mass_matrix.vmult(y, x);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_damping_force(const VectorType &v, VectorType &y) const
+  {
+    y = 0;
+    if (time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
+      return;
+    VectorType tmp(v);
+    if (rayleigh_alpha != 0)
+      {
+        apply_mass(v, tmp);
+        y.add(rayleigh_alpha, tmp);
+      }
+    if (rayleigh_beta != 0)
+      {
+        stiffness_matrix.vmult(tmp, v);
+        y.add(rayleigh_beta, tmp);
+      }
+    if (has_absorbing)
+      {
+        tmp = v;
+        tmp.scale(absorbing_damping);
+        y += tmp;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::add_kinematic_increment(VectorType &u) const
+  {
+    for (const auto &[dof, v] : kinematic_dofs)
+      u(dof) = u(dof) + v * time_step;
+    u.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::set_kinematic_velocity(VectorType &v) const
+  {
+    for (const auto &[dof, value] : kinematic_dofs)
+      v(dof) = value;
+    v.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_finite(const VectorType &v, const std::string &what) const
+  {
+    const double norm = v.l2_norm();
+    if (std::isfinite(norm))
+      return;
+    std::ostringstream message;
+    message << "At step " << step << " (t = " << time << " s) the " << what
+            << " is no longer finite, and the run was stopped before "
+               "writing it. ";
+    if (time_parameters.scheme ==
+        TimeIntegration::Scheme::explicit_central_difference)
+      message << "The explicit scheme blew up: its time step " << time_step
+              << " s against the stable limit " << stable_time_step
+              << " s. Reduce <Time integration/Time step>.";
+    else
+      message << "Check the loads and material constants for extreme values.";
+    AssertThrow(false, ExcMessage(message.str()));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::initialize_state()
+  {
+    TimerOutput::Scope t(timer, "Initial state");
+
+    // Interpolate the initial fields at the support points of the DoFs.
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(
+      hp::MappingCollection<dim>(MappingQ1<dim>()), dof_handler, support_points);
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &fe = cell->get_fe();
+          dofs.resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (locally_owned_dofs.is_element(dofs[i]))
+              {
+                const unsigned int c = fe.system_to_component_index(i).first % dim;
+                const Point<dim>  &x = support_points[dofs[i]];
+                displacement(dofs[i]) = initial_displacement->value(x, c);
+                velocity(dofs[i])     = initial_velocity->value(x, c);
+              }
+        }
+    displacement.compress(VectorOperation::insert);
+    velocity.compress(VectorOperation::insert);
+    hanging_constraints.distribute(displacement);
+    hanging_constraints.distribute(velocity);
+
+    VectorType load(locally_owned_dofs, communicator);
+    assemble_load_vector(0, load);
+
+    if (time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
+      {
+        velocity     = 0;
+        acceleration = 0;
+      }
+    else
+      {
+        set_kinematic_velocity(velocity);
+        // M a_0 = f - K u_0 - C v_0 on the free DoFs.
+        VectorType r(load), tmp(load);
+        stiffness_matrix.vmult(tmp, displacement);
+        r -= tmp;
+        compute_damping_force(velocity, tmp);
+        r -= tmp;
+        increment_constraints.set_zero(r);
+        if (use_lumped_mass)
+          {
+            acceleration = r;
+            for (const auto i : locally_owned_dofs)
+              acceleration(i) = (lumped_mass(i) > 0 &&
+                                 !increment_constraints.is_constrained(i)) ?
+                                  r(i) / lumped_mass(i) :
+                                  0.;
+            acceleration.compress(VectorOperation::insert);
+          }
+        else if (r.l2_norm() > 0)
+          {
+            ConstrainedMass        op{mass_matrix, increment_constraints, locally_owned_dofs};
+            DiagonalPreconditioner jacobi;
+            jacobi.inverse.reinit(locally_owned_dofs, communicator);
+            for (const auto i : locally_owned_dofs)
+              jacobi.inverse(i) = 1. / mass_matrix.diag_element(i);
+            jacobi.inverse.compress(VectorOperation::insert);
+            SolverControl control(1000, 1e-14 * r.l2_norm());
+            SolverCG<VectorType> cg(control);
+            acceleration = 0;
+            cg.solve(op, acceleration, r, jacobi);
+            hanging_constraints.distribute(acceleration);
+          }
+        else
+          acceleration = 0;
+      }
+
+    // Forces and energies of the initial state.
+    VectorType ku(load);
+    stiffness_matrix.vmult(ku, displacement);
+    compute_damping_force(velocity, damping_force);
+    VectorType ma(load);
+    apply_mass(acceleration, ma);
+    applied_force = load;
+    for (const auto i : locally_owned_dofs)
+      if (increment_constraints.is_constrained(i))
+        applied_force(i) = ku(i) + ma(i) + damping_force(i);
+    applied_force.compress(VectorOperation::insert);
+
+    strain_energy = 0.5 * (displacement * ku);
+    VectorType mv(load);
+    if (time_parameters.scheme != TimeIntegration::Scheme::quasi_static)
+      {
+        apply_mass(velocity, mv);
+        kinetic_energy = 0.5 * (velocity * mv);
+      }
+    external_work       = 0;
+    damping_dissipation = 0;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::update_energy(const VectorType &old_displacement,
+                                const VectorType &load,
+                                const VectorType &residual,
+                                const VectorType &new_damping_force)
+  {
+    // Work of the applied forces by the trapezoidal rule: loads on free
+    // DoFs, reactions (load minus residual) on kinematically held ones. On
+    // free DoFs the residual is the error of the solve, which thus shows up
+    // in the energy balance instead of being hidden.
+    VectorType force(load);
+    for (const auto i : locally_owned_dofs)
+      if (increment_constraints.is_constrained(i))
+        force(i) = load(i) - residual(i);
+    force.compress(VectorOperation::insert);
+
+    VectorType increment(displacement);
+    increment -= old_displacement;
+    external_work += 0.5 * ((force * increment) + (applied_force * increment));
+    damping_dissipation += 0.5 * ((new_damping_force * increment) +
+                                  (damping_force * increment));
+    applied_force = force;
+    damping_force = new_damping_force;
+
+    VectorType tmp(load);
+    stiffness_matrix.vmult(tmp, displacement);
+    strain_energy = 0.5 * (displacement * tmp);
+    if (time_parameters.scheme != TimeIntegration::Scheme::quasi_static)
+      {
+        apply_mass(velocity, tmp);
+        kinetic_energy = 0.5 * (velocity * tmp);
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::implicit_step()
+  {
+    TimerOutput::Scope t(timer, "Implicit step");
+    const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
+                                                 time_parameters.gamma,
+                                                 time_step);
+    const double gamma = time_parameters.gamma;
+
+    const VectorType old_u(displacement), old_v(velocity), old_a(acceleration);
+    VectorType       load(displacement), residual(displacement),
+      tmp(displacement), increment(displacement), cv(displacement);
+    assemble_load_vector(time, load);
+
+    // New velocity and acceleration as functions of the new displacement
+    // (Newmark, eq. 12), and the residual f - M a - C v - K u.
+    const auto update_rates = [&]() {
+      acceleration = displacement;
+      acceleration -= old_u;
+      acceleration *= a.a0;
+      acceleration.add(-a.a2, old_v, -a.a3, old_a);
+      velocity = old_v;
+      velocity.add((1 - gamma) * time_step, old_a, gamma * time_step, acceleration);
+    };
+    const auto compute_residual = [&]() {
+      residual = load;
+      stiffness_matrix.vmult(tmp, displacement);
+      residual -= tmp;
+      apply_mass(acceleration, tmp);
+      residual -= tmp;
+      compute_damping_force(velocity, cv);
+      residual -= cv;
+    };
+
+    displacement = old_u;
+    add_kinematic_increment(displacement);
+    update_rates();
+    compute_residual();
+
+    // The problem is linear without a fault: one solve of the effective
+    // stiffness system (eq. 14) is exact up to the solver tolerance. The
+    // fault's Newton iteration (Fig. 6) will wrap this solve.
+    increment_constraints.set_zero(residual);
+    increment = 0;
+    last_linear_iterations = linear_solver.solve(system_matrix, increment, residual);
+    increment_constraints.distribute(increment);
+    displacement += increment;
+    update_rates();
+    compute_residual();
+    check_finite(displacement, "displacement");
+
+    update_energy(old_u, load, residual, cv);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::explicit_step()
+  {
+    TimerOutput::Scope t(timer, "Explicit step");
+    const double       gamma = time_parameters.gamma;
+    const VectorType   old_u(displacement);
+    VectorType         load(displacement), residual(displacement),
+      tmp(displacement), cv(displacement);
+    assemble_load_vector(time, load);
+
+    // Predictors: u = u + dt v + dt^2/2 a, v~ = v + (1 - gamma) dt a.
+    displacement.add(time_step, velocity, 0.5 * time_step * time_step, acceleration);
+    velocity.add((1 - gamma) * time_step, acceleration);
+    for (const auto &[dof, v] : kinematic_dofs)
+      displacement(dof) = old_u(dof) + v * time_step;
+    displacement.compress(VectorOperation::insert);
+    set_kinematic_velocity(velocity);
+    hanging_constraints.distribute(displacement);
+
+    // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
+    //   - alpha M v~ - C_abs v~; the stiffness damping uses the predictor.
+    VectorType kw(displacement);
+    kw.add(rayleigh_beta, velocity);
+    stiffness_matrix.vmult(tmp, kw);
+    kw = tmp;
+    residual = load;
+    residual -= kw;
+    compute_damping_force(velocity, cv);
+    if (rayleigh_beta != 0)
+      {
+        // cv holds beta K v~ too, which is already in kw.
+        stiffness_matrix.vmult(tmp, velocity);
+        cv.add(-rayleigh_beta, tmp);
+      }
+    residual -= cv;
+    acceleration = residual;
+    acceleration.scale(explicit_inverse_diagonal);
+    velocity.add(gamma * time_step, acceleration);
+    hanging_constraints.distribute(acceleration);
+    hanging_constraints.distribute(velocity);
+    check_finite(displacement, "displacement");
+
+    // Residual of the new state, for the reactions in the energy budget.
+    residual = load;
+    stiffness_matrix.vmult(tmp, displacement);
+    residual -= tmp;
+    apply_mass(acceleration, tmp);
+    residual -= tmp;
+    compute_damping_force(velocity, cv);
+    residual -= cv;
+    update_energy(old_u, load, residual, cv);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::quasi_static_step()
+  {
+    TimerOutput::Scope t(timer, "Quasi-static step");
+    const VectorType old_u(displacement);
+    VectorType load(displacement), residual(displacement), tmp(displacement),
+      increment(displacement), zero(displacement);
+    assemble_load_vector(time, load);
+
+    add_kinematic_increment(displacement);
+    residual = load;
+    stiffness_matrix.vmult(tmp, displacement);
+    residual -= tmp;
+    increment_constraints.set_zero(residual);
+    increment = 0;
+    last_linear_iterations = linear_solver.solve(system_matrix, increment, residual);
+    increment_constraints.distribute(increment);
+    displacement += increment;
+    check_finite(displacement, "displacement");
+
+    // The rate of the loading, for output; no inertia.
+    velocity = displacement;
+    velocity -= old_u;
+    velocity /= time_step;
+
+    residual = load;
+    stiffness_matrix.vmult(tmp, displacement);
+    residual -= tmp;
+    zero = 0;
+    update_energy(old_u, load, residual, zero);
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture
