@@ -44,7 +44,7 @@ namespace rupture
       std::ostringstream out;
       for (unsigned int c = 0; c < columns.size(); ++c)
         out << "# " << c + 1 << ": " << columns[c] << "\n";
-      out << std::setprecision(10);
+      out << std::setprecision(14);
       for (const auto &row : rows)
         {
           for (unsigned int c = 0; c < row.size(); ++c)

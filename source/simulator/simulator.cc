@@ -149,7 +149,7 @@ namespace rupture
     : communicator(communicator)
     , pcout(log.stream(),
             dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-    , timer(communicator, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(communicator,
                     typename Triangulation<dim>::MeshSmoothing(
                       Triangulation<dim>::smoothing_on_refinement |
@@ -160,6 +160,7 @@ namespace rupture
     , time_step(0)
     , stable_time_step(0)
     , step(0)
+    , initial_energy(0)
     , kinetic_energy(0)
     , strain_energy(0)
     , external_work(0)
@@ -556,7 +557,8 @@ namespace rupture
       strain_energy,
       external_work,
       damping_dissipation,
-      kinetic_energy + strain_energy + damping_dissipation - external_work,
+      kinetic_energy + strain_energy + damping_dissipation - external_work -
+        initial_energy,
       test_mode ? 0. : MPI_Wtime() - wall_time_start};
     if (exact_displacement)
       row.push_back(compute_l2_error(time));

@@ -237,6 +237,7 @@ namespace rupture
       }
     external_work       = 0;
     damping_dissipation = 0;
+    initial_energy      = kinetic_energy + strain_energy;
   }
 
 

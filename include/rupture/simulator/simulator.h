@@ -188,7 +188,9 @@ namespace rupture
     VectorType   applied_force;
     VectorType   damping_force;
 
-    // Energy budget (J) and per-step counters.
+    // Energy budget (J) and per-step counters. The balance is
+    // kinetic + strain + dissipated - work - initial energy.
+    double       initial_energy;
     double       kinetic_energy;
     double       strain_energy;
     double       external_work;

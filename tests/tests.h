@@ -1,0 +1,105 @@
+// Helpers for rupture's .cc tests: run the program as the command line
+// would, quietly, and read back what it wrote.
+#ifndef rupture_tests_h
+#define rupture_tests_h
+
+#include <rupture/simulator/run.h>
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace tests
+{
+  /**
+   * Run rupture with @p arguments. The screen output is swallowed unless
+   * @p verbose; errors still reach std::cerr, which the test compares.
+   */
+  inline int
+  run(const std::vector<std::string> &arguments, const bool verbose = false)
+  {
+    std::ostringstream sink;
+    std::streambuf    *old = std::cout.rdbuf();
+    if (!verbose)
+      std::cout.rdbuf(sink.rdbuf());
+    const int code = rupture::run_program(arguments, MPI_COMM_WORLD);
+    std::cout.rdbuf(old);
+    return code;
+  }
+
+  /**
+   * Run rupture with @p arguments, swallowing the screen output and
+   * returning what it wrote to std::cerr in @p errors.
+   */
+  inline int
+  run_capture(const std::vector<std::string> &arguments, std::string &errors)
+  {
+    std::ostringstream sink, error_sink;
+    std::streambuf    *old     = std::cout.rdbuf(sink.rdbuf());
+    std::streambuf    *old_err = std::cerr.rdbuf(error_sink.rdbuf());
+    const int code = rupture::run_program(arguments, MPI_COMM_WORLD);
+    std::cout.rdbuf(old);
+    std::cerr.rdbuf(old_err);
+    errors = error_sink.str();
+    return code;
+  }
+
+  /**
+   * The rows of an <output>/statistics file.
+   */
+  inline std::vector<std::vector<double>>
+  read_statistics(const std::string &file)
+  {
+    std::vector<std::vector<double>> rows;
+    std::ifstream                    in(file);
+    std::string                      line;
+    while (std::getline(in, line))
+      {
+        if (line.empty() || line[0] == '#')
+          continue;
+        std::istringstream  s(line);
+        std::vector<double> row;
+        double              v;
+        while (s >> v)
+          row.push_back(v);
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  /**
+   * The number after @p key on the first line of @p file that contains it.
+   */
+  inline double
+  find_number(const std::string &file, const std::string &key)
+  {
+    std::ifstream in(file);
+    std::string   line;
+    while (std::getline(in, line))
+      {
+        const auto pos = line.find(key);
+        if (pos != std::string::npos)
+          return std::stod(line.substr(pos + key.size()));
+      }
+    return -1;
+  }
+
+  inline bool
+  file_exists(const std::string &file)
+  {
+    return std::ifstream(file).good();
+  }
+
+  inline std::string
+  read_file(const std::string &file)
+  {
+    std::ifstream      in(file);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+} // namespace tests
+
+#endif
