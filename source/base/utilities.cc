@@ -6,6 +6,8 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iostream>
+#include <sstream>
 #include <map>
 
 namespace rupture
@@ -37,6 +39,11 @@ namespace rupture
         (dim == 1 ? "x,t" : (dim == 2 ? "x,y,t" : "x,y,z,t"));
       const std::map<std::string, double> constants = {
         {"pi", numbers::PI}};
+      // The parser reports its errors on std::cerr; keep them for the
+      // message instead.
+      std::ostringstream parser_errors;
+      std::streambuf    *old_cerr = std::cerr.rdbuf(parser_errors.rdbuf());
+      bool               ok       = true;
       try
         {
           function->initialize(variables, parts, constants, true);
@@ -47,11 +54,23 @@ namespace rupture
         }
       catch (...)
         {
+          ok = false;
+        }
+      std::cerr.rdbuf(old_cerr);
+      if (!ok)
+        {
+          std::string reason = parser_errors.str();
+          const auto  begin  = reason.find('<');
+          const auto  end    = reason.find('>');
+          reason = (begin != std::string::npos && end != std::string::npos) ?
+                     " (" + reason.substr(begin + 1, end - begin - 1) + ")" :
+                     "";
           AssertThrow(false,
                       ExcMessage(
                         "The entry <" + entry_name +
                         "> could not be parsed as a function: <" + expression +
-                        ">. Allowed are expressions in the variables " +
+                        ">" + reason +
+                        ". Allowed are expressions in the variables " +
                         variables + " and the constant pi, one per component, "
                         "separated by ';'."));
         }

@@ -5,6 +5,8 @@
 #include <deal.II/grid/tria.h>
 
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace rupture
@@ -24,8 +26,8 @@ namespace rupture
           Patterns::Anything(),
           "Path of the Gmsh .msh file (ASCII, format 2.2 or 4.1), relative "
           "to the directory the program is started in. Cells must be "
-          "hexahedra (quadrilaterals in 2-D). Physical tags of cells become "
-          "material ids; named physical groups of boundary faces become the "
+          "hexahedra (quadrilaterals in 2-D). The physical tags of cells, in "
+          "ascending order, become material ids 0, 1, 2, ...; named physical groups of boundary faces become the "
           "boundary names used by <Boundary conditions>.");
       }
       prm.leave_subsection();
@@ -53,9 +55,18 @@ namespace rupture
                              "> given in <Scene/Gmsh/Mesh file> is missing "
                              "or unreadable."));
 
+      std::string line;
+      while (std::getline(in, line) && dealii::Utilities::trim(line).empty())
+        ;
+      AssertThrow(dealii::Utilities::trim(line) == "$MeshFormat",
+                  ExcMessage("The file <" + file_name +
+                             "> given in <Scene/Gmsh/Mesh file> is not a "
+                             "Gmsh .msh file: it does not begin with "
+                             "$MeshFormat. Allowed are ASCII .msh files of "
+                             "format 2.2 or 4.1."));
+
       // $PhysicalNames: "n" then lines "dimension tag \"name\"".
       boundary_names.clear();
-      std::string line;
       while (std::getline(in, line))
         if (dealii::Utilities::trim(line) == "$PhysicalNames")
           {
@@ -122,6 +133,17 @@ namespace rupture
                              "> contains cells that are not hexahedra "
                              "(quadrilaterals in 2-D); only those are "
                              "allowed."));
+      // Physical tags of cells, in ascending order, become material ids
+      // 0, 1, 2, ...: the order of the lists in the Material section.
+      std::set<types::material_id> tags;
+      for (const auto &cell : serial.active_cell_iterators())
+        tags.insert(cell->material_id());
+      std::map<types::material_id, types::material_id> id_of_tag;
+      for (const auto tag : tags)
+        id_of_tag.emplace(tag, id_of_tag.size());
+      for (const auto &cell : serial.active_cell_iterators())
+        cell->set_material_id(id_of_tag[cell->material_id()]);
+
       triangulation.copy_triangulation(serial);
     }
 

@@ -68,9 +68,10 @@ namespace rupture
               out << "\n## " << (path.empty() ? "Global parameters" : path)
                   << "\n\n";
             any_entry = true;
+            const std::string value = node.get<std::string>("default_value");
             out << "### `" << demangle(key) << "`\n\n"
-                << "- Default: `" << node.get<std::string>("default_value")
-                << "`\n"
+                << "- Default: " << (value.empty() ? "(empty)" : "`" + value + "`")
+                << "\n"
                 << "- Allowed: " << node.get<std::string>("pattern_description")
                 << "\n\n"
                 << node.get<std::string>("documentation") << "\n\n";
@@ -95,7 +96,7 @@ namespace rupture
       std::string result;
       for (const auto &line : dealii::Utilities::split_string_list(text, '\n'))
         if (!dealii::Utilities::trim(line).empty())
-          result += (result.empty() ? "" : "\n       ") +
+          result += (result.empty() ? "" : " ") +
                     dealii::Utilities::trim(line);
       return result;
     }

@@ -10,6 +10,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -272,10 +273,21 @@ namespace rupture
       materials.check_material_id(cell->material_id());
     triangulation.refine_global(n_global_refinements);
 
+    std::vector<double> cells_per_material(materials.n_materials(), 0.);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        cells_per_material[cell->material_id()] += 1;
+    MPI_Allreduce(MPI_IN_PLACE,
+                  cells_per_material.data(),
+                  cells_per_material.size(),
+                  MPI_DOUBLE,
+                  MPI_SUM,
+                  communicator);
     pcout << "   Mesh: " << triangulation.n_global_active_cells()
-          << " cells, " << triangulation.n_vertices() << " coarse-level "
-          << "vertices per rank\n"
-          << materials.summary();
+          << " cells (per material id:";
+    for (const double n : cells_per_material)
+      pcout << " " << static_cast<unsigned long>(n);
+    pcout << ")\n" << materials.summary();
   }
 
 
@@ -522,11 +534,13 @@ namespace rupture
         write_step_output(step == n_steps);
       }
 
-    statistics.write(output_directory + "/statistics");
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      statistics.write(output_directory + "/statistics");
 
     const auto &last = statistics.last_row();
     pcout << std::scientific << std::setprecision(6)
           << "Final state at t = " << time << " s:\n"
+          << "   Initial energy       " << initial_energy << " J\n"
           << "   Kinetic energy       " << last[4] << " J\n"
           << "   Strain energy        " << last[5] << " J\n"
           << "   Work of loads        " << last[6] << " J\n"
@@ -535,6 +549,22 @@ namespace rupture
     if (exact_displacement)
       pcout << "   L2 error             " << last.back() << "\n";
     pcout << std::defaultfloat;
+    // The balance error relative to the largest energy in play.
+    const double scale = std::max({std::abs(last[4]) + std::abs(last[5]),
+                                   std::abs(last[6]),
+                                   std::abs(last[7]),
+                                   std::abs(initial_energy),
+                                   1e-300});
+    // The implicit and quasi-static schemes close the budget to round-off
+    // (trapezoidal rule); central difference only to O(dt^2).
+    const double tolerance =
+      (time_parameters.scheme ==
+       TimeIntegration::Scheme::explicit_central_difference) ?
+        1e-2 :
+        1e-8;
+    pcout << "   Energy balance error below " << tolerance
+          << " of the energy scale: "
+          << (std::abs(last[8]) < tolerance * scale ? "yes" : "no") << "\n";
     if (!test_mode)
       {
         pcout << "   Energy balance error " << last[8] << " J\n";
@@ -581,7 +611,8 @@ namespace rupture
     u_ghost = displacement;
     v_ghost = velocity;
     volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
-    statistics.write(output_directory + "/statistics");
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      statistics.write(output_directory + "/statistics");
     next_output_time = time + output_interval;
   }
 

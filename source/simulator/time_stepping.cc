@@ -221,10 +221,16 @@ namespace rupture
     stiffness_matrix.vmult(ku, displacement);
     compute_damping_force(velocity, damping_force);
     VectorType ma(load);
-    apply_mass(acceleration, ma);
+    ma = 0;
+    if (time_parameters.scheme != TimeIntegration::Scheme::quasi_static)
+      apply_mass(acceleration, ma);
+    // The force the body is in balance with at the start. A quasi-static
+    // run follows an equilibrium path, on which the loads grow from the
+    // internal force K u_0 to their full value within the first step.
     applied_force = load;
     for (const auto i : locally_owned_dofs)
-      if (increment_constraints.is_constrained(i))
+      if (increment_constraints.is_constrained(i) ||
+          time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
         applied_force(i) = ku(i) + ma(i) + damping_force(i);
     applied_force.compress(VectorOperation::insert);
 

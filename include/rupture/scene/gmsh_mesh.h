@@ -10,7 +10,8 @@ namespace rupture
     /**
      * A hexahedral (3-D) or quadrilateral (2-D) mesh read from a Gmsh .msh
      * file (format 2.2 or 4.1, ASCII). The physical tag of each volume
-     * (surface in 2-D) element is its material id; the physical tag of each
+     * (surface in 2-D) element gives its material: the distinct tags, in
+     * ascending order, are material ids 0, 1, 2, ... The physical tag of each
      * boundary face is its boundary id, and the $PhysicalNames section of
      * the file names those boundaries.
      */

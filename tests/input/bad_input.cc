@@ -1,0 +1,129 @@
+// Every class of bad input gets one clear message naming the entry, the
+// value and what is allowed, a non-zero exit code, and leaves the results
+// of an earlier run in the output directory untouched.
+
+#include "../tests.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace
+{
+  // A valid small run; each case changes one thing.
+  const std::string base = R"(set Dimension = 2
+set Test mode = true
+set Output directory = earlier-run
+subsection Scene
+  set Model = box
+  subsection Box
+    set Number of cells = 2
+  end
+end
+subsection Boundary conditions
+  set Fixed = bottom
+end
+subsection Time integration
+  set Time step = 0.01
+  set End time = 0.02
+end
+)";
+
+  void
+  write(const std::string &file, const std::string &text)
+  {
+    std::ofstream(file) << text;
+  }
+
+  void
+  check(const std::string &title, const std::vector<std::string> &args)
+  {
+    std::string errors;
+    const int   code = tests::run_capture(args, errors);
+    // Keep the message, drop blank lines.
+    while (!errors.empty() && (errors[0] == '\n'))
+      errors.erase(0, 1);
+    std::printf("* %s\n  exit code: %d\n  %s", title.c_str(), code, errors.c_str());
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  // An earlier run's results that no bad input may destroy.
+  std::filesystem::create_directories("earlier-run");
+  write("earlier-run/statistics", "earlier results\n");
+  write("earlier-run/log.txt", "earlier log\n");
+
+  write("valid.prm", base);
+  write("unknown_entry.prm",
+        base + "subsection Material\n  set Densty = 2700\nend\n");
+  write("malformed_value.prm",
+        base + "subsection Material\n  set Density = heavy\nend\n");
+  write("bad_dimension.prm", "set Dimension = 4\n");
+  write("missing_mesh.prm",
+        base + "subsection Scene\n  set Model = gmsh\n  subsection Gmsh\n"
+               "    set Mesh file = no-such-mesh.msh\n  end\nend\n");
+  write("garbage.msh", "this is not a mesh\n");
+  write("unreadable_mesh.prm",
+        base + "subsection Scene\n  set Model = gmsh\n  subsection Gmsh\n"
+               "    set Mesh file = garbage.msh\n  end\nend\n");
+  write("poisson.prm",
+        base + "subsection Material\n  set Parametrization = Young's modulus "
+               "and Poisson's ratio\n  set Poisson's ratio = 0.5\nend\n");
+  write("density.prm", base + "subsection Material\n  set Density = 0\nend\n");
+  write("wave_speeds.prm",
+        base + "subsection Material\n  set P-wave speed = 3000\n"
+               "  set S-wave speed = 3000\nend\n");
+  write("time_step.prm",
+        base + "subsection Time integration\n  set Time step = -0.01\nend\n");
+  write("explicit_step.prm",
+        base + "subsection Time integration\n  set Scheme = explicit central "
+               "difference\n  set Time step = 1\nend\n");
+  write("boundary_name.prm",
+        base + "subsection Boundary conditions\n  set Fixed = botom\nend\n");
+  write("roller.prm",
+        base + "subsection Boundary conditions\n  set Fixed =\n"
+               "  set Roller = bottom: z\nend\n");
+  write("material_id.prm",
+        base + "subsection Scene\n  subsection Box\n    set Layer interfaces "
+               "= 500\n  end\nend\n");
+  write("function.prm",
+        base + "subsection Initial conditions\n  set Displacement = "
+               "sin(q*x); 0\nend\n");
+
+  check("unknown entry", {"unknown_entry.prm"});
+  check("malformed value", {"malformed_value.prm"});
+  check("dimension out of range", {"bad_dimension.prm"});
+  check("missing mesh file", {"missing_mesh.prm"});
+  check("unreadable mesh file", {"unreadable_mesh.prm"});
+  check("Poisson's ratio 0.5", {"poisson.prm"});
+  check("density 0", {"density.prm"});
+  check("P-wave speed too low for the S-wave speed", {"wave_speeds.prm"});
+  check("negative time step", {"time_step.prm"});
+  check("explicit time step above the stable limit", {"explicit_step.prm"});
+  check("boundary name the scene does not have", {"boundary_name.prm"});
+  check("roller component that does not exist in 2-D", {"roller.prm"});
+  check("material id without material", {"material_id.prm"});
+  check("function with an unknown variable", {"function.prm"});
+  check("missing parameter file", {"no-such-file.prm"});
+  check("no parameter file", {});
+  check("unknown option", {"--frobnicate", "valid.prm"});
+  check("--set of an unknown entry",
+        {"valid.prm", "--set", "Time integration/End tme=1"});
+  check("--set with a malformed value",
+        {"valid.prm", "--set", "Time integration/End time=soon"});
+  check("--set with a non-physical value",
+        {"valid.prm", "--set", "Time integration/End time=-1"});
+
+  std::printf("* earlier results kept: %s\n",
+              tests::read_file("earlier-run/statistics") == "earlier results\n" &&
+                  tests::read_file("earlier-run/log.txt") == "earlier log\n" ?
+                "yes" :
+                "no");
+  std::printf("* a valid run exits with code %d\n", tests::run({"valid.prm"}));
+}
