@@ -7,6 +7,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>

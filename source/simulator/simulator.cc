@@ -479,7 +479,8 @@ namespace rupture
                                         "Energy dissipated by damping and "
                                         "absorbing boundaries (J)",
                                         "Energy balance error (J): kinetic + "
-                                        "strain + dissipated - work",
+                                        "strain + dissipated - work - initial "
+                                        "energy",
                                         "Wall time (s)"};
     if (exact_displacement)
       columns.emplace_back("L2 error of the displacement (m m^(dim/2))");

@@ -330,14 +330,21 @@ namespace rupture
     // fault's Newton iteration (Fig. 6) will wrap this solve.
     increment_constraints.set_zero(residual);
     increment = 0;
-    last_linear_iterations = linear_solver.solve(system_matrix, increment, residual);
+    {
+      TimerOutput::Scope t(timer, "Linear solve");
+      last_linear_iterations =
+        linear_solver.solve(system_matrix, increment, residual);
+    }
     increment_constraints.distribute(increment);
     displacement += increment;
     update_rates();
     compute_residual();
     check_finite(displacement, "displacement");
 
-    update_energy(old_u, load, residual, cv);
+    {
+      TimerOutput::Scope t(timer, "Energy budget");
+      update_energy(old_u, load, residual, cv);
+    }
   }
 
 

@@ -62,7 +62,7 @@ namespace rupture
       data.elliptic              = true;
       data.higher_order_elements = higher_order;
       data.smoother_sweeps       = 2;
-      data.aggregation_threshold = 0.02;
+      data.aggregation_threshold = 1e-4;
 
       Teuchos::ParameterList              parameters;
       std::unique_ptr<Epetra_MultiVector> unused;
