@@ -7,7 +7,6 @@
 
 #include <fstream>
 #include <iostream>
-#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,7 +39,7 @@ namespace tests
     std::ostringstream sink, error_sink;
     std::streambuf    *old     = std::cout.rdbuf(sink.rdbuf());
     std::streambuf    *old_err = std::cerr.rdbuf(error_sink.rdbuf());
-    const int code = rupture::run_program(arguments, MPI_COMM_WORLD);
+    const int          code = rupture::run_program(arguments, MPI_COMM_WORLD);
     std::cout.rdbuf(old);
     std::cerr.rdbuf(old_err);
     errors = error_sink.str();

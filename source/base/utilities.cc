@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <sstream>
 #include <map>
+#include <sstream>
 
 namespace rupture
 {
@@ -37,8 +37,7 @@ namespace rupture
 
       const std::string variables =
         (dim == 1 ? "x,t" : (dim == 2 ? "x,y,t" : "x,y,z,t"));
-      const std::map<std::string, double> constants = {
-        {"pi", numbers::PI}};
+      const std::map<std::string, double> constants = {{"pi", numbers::PI}};
       // The parser reports its errors on std::cerr; keep them for the
       // message instead.
       std::ostringstream parser_errors;
@@ -66,13 +65,13 @@ namespace rupture
                      " (" + reason.substr(begin + 1, end - begin - 1) + ")" :
                      "";
           AssertThrow(false,
-                      ExcMessage(
-                        "The entry <" + entry_name +
-                        "> could not be parsed as a function: <" + expression +
-                        ">" + reason +
-                        ". Allowed are expressions in the variables " +
-                        variables + " and the constant pi, one per component, "
-                        "separated by ';'."));
+                      ExcMessage("The entry <" + entry_name +
+                                 "> could not be parsed as a function: <" +
+                                 expression + ">" + reason +
+                                 ". Allowed are expressions in the variables " +
+                                 variables +
+                                 " and the constant pi, one per component, "
+                                 "separated by ';'."));
         }
       return function;
     }
@@ -92,8 +91,8 @@ namespace rupture
                   ExcMessage("The entry <" + entry_name + "> needs exactly " +
                              std::to_string(dim) +
                              " comma separated numbers in this dimension" +
-                               (allow_single_value ? " (or a single one)" : "") +
-                               ", but "
+                             (allow_single_value ? " (or a single one)" : "") +
+                             ", but "
                              "was given <" +
                              text + ">."));
       Tensor<1, dim> result;

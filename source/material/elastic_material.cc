@@ -57,7 +57,8 @@ namespace rupture
         prm.declare_entry(
           "Parametrization",
           "wave speeds",
-          Patterns::Selection("wave speeds|Young's modulus and Poisson's ratio"),
+          Patterns::Selection(
+            "wave speeds|Young's modulus and Poisson's ratio"),
           "How the elastic constants are given: by P- and S-wave speeds, or "
           "by Young's modulus and Poisson's ratio.");
         prm.declare_entry("Density",
@@ -242,8 +243,9 @@ namespace rupture
         {
           const auto &m = materials[i];
           out << "   Material " << i << " (" << m.name
-              << "): rho = " << m.density << " kg/m^3, vp = " << std::setprecision(6)
-              << m.p_wave_speed() << " m/s, vs = " << m.s_wave_speed()
+              << "): rho = " << m.density
+              << " kg/m^3, vp = " << std::setprecision(6) << m.p_wave_speed()
+              << " m/s, vs = " << m.s_wave_speed()
               << " m/s, E = " << m.youngs_modulus()
               << " Pa, nu = " << m.poissons_ratio() << "\n";
         }

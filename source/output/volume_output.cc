@@ -21,8 +21,8 @@ namespace rupture
       class FieldPostprocessor : public DataPostprocessor<dim>
       {
       public:
-        FieldPostprocessor(const std::string                 &name,
-                           const bool                          with_stress,
+        FieldPostprocessor(const std::string                &name,
+                           const bool                        with_stress,
                            const Material::ElasticMaterials *materials)
           : name(name)
           , with_stress(with_stress)
@@ -32,12 +32,12 @@ namespace rupture
         void
         evaluate_vector_field(
           const DataPostprocessorInputs::Vector<dim> &inputs,
-          std::vector<Vector<double>> &computed) const override
+          std::vector<Vector<double>>                &computed) const override
         {
           const unsigned int n_q     = inputs.solution_values.size();
           const unsigned int n_sides = inputs.solution_values[0].size() / dim;
-          const auto cell = inputs.template get_cell<dim>();
-          const auto &m   = materials->get(cell->material_id());
+          const auto         cell    = inputs.template get_cell<dim>();
+          const auto        &m       = materials->get(cell->material_id());
           for (unsigned int q = 0; q < n_q; ++q)
             {
               Tensor<2, dim> grad;
@@ -105,10 +105,9 @@ namespace rupture
 
 
     template <int dim>
-    VolumeOutput<dim>::VolumeOutput(
-      const std::string                 &output_directory,
-      const Material::ElasticMaterials &materials,
-      const MPI_Comm                     communicator)
+    VolumeOutput<dim>::VolumeOutput(const std::string &output_directory,
+                                    const Material::ElasticMaterials &materials,
+                                    const MPI_Comm communicator)
       : directory(output_directory)
       , materials(materials)
       , communicator(communicator)
@@ -118,18 +117,20 @@ namespace rupture
 
     template <int dim>
     void
-    VolumeOutput<dim>::write(const DoFHandler<dim>                &dof_handler,
+    VolumeOutput<dim>::write(const DoFHandler<dim>               &dof_handler,
                              const TrilinosWrappers::MPI::Vector &displacement,
                              const TrilinosWrappers::MPI::Vector &velocity,
-                             const double                          time,
-                             const unsigned int                    step)
+                             const double                         time,
+                             const unsigned int                   step)
     {
-      FieldPostprocessor<dim> displacement_out("displacement", true, &materials);
+      FieldPostprocessor<dim> displacement_out("displacement",
+                                               true,
+                                               &materials);
       FieldPostprocessor<dim> velocity_out("velocity", false, &materials);
 
-      const auto &tria = dof_handler.get_triangulation();
-      Vector<float> material_id(tria.n_active_cells());
-      Vector<float> rank(tria.n_active_cells());
+      const auto        &tria = dof_handler.get_triangulation();
+      Vector<float>      material_id(tria.n_active_cells());
+      Vector<float>      rank(tria.n_active_cells());
       const unsigned int my_rank =
         dealii::Utilities::MPI::this_mpi_process(communicator);
       for (const auto &cell : dof_handler.active_cell_iterators())

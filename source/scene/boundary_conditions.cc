@@ -92,9 +92,9 @@ namespace rupture
                         ExcMessage("<Boundary conditions/" + entry +
                                    "> expects 'name: value' pairs, but <" +
                                    item + "> has no ':'."));
-            result.emplace_back(
-              dealii::Utilities::trim(item.substr(0, colon)),
-              dealii::Utilities::trim(item.substr(colon + 1)));
+            result.emplace_back(dealii::Utilities::trim(item.substr(0, colon)),
+                                dealii::Utilities::trim(
+                                  item.substr(colon + 1)));
           }
         return result;
       }
@@ -112,7 +112,8 @@ namespace rupture
       tractions.clear();
       absorbing.clear();
       std::map<types::boundary_id, std::string> used;
-      const auto claim = [&](const std::string &name, const std::string &entry) {
+      const auto claim = [&](const std::string &name,
+                             const std::string &entry) {
         const types::boundary_id id = lookup(name, entry, names);
         AssertThrow(used.count(id) == 0,
                     ExcMessage("The boundary <" + name +
@@ -157,8 +158,8 @@ namespace rupture
                             ExcMessage("<Boundary conditions/Roller> gives "
                                        "the component <" +
                                        std::string(1, c) + "> for <" + name +
-                                       ">; allowed are the letters " +
-                                       letters + "."));
+                                       ">; allowed are the letters " + letters +
+                                       "."));
                 k.components[d] = true;
               }
             kinematic.push_back(k);
@@ -181,7 +182,7 @@ namespace rupture
         for (const auto &[name, value] :
              split_pairs(prm.get("Traction"), "Traction"))
           {
-            const types::boundary_id id = claim(name, "Traction");
+            const types::boundary_id id   = claim(name, "Traction");
             std::string              list = value;
             std::replace(list.begin(), list.end(), ';', ',');
             tractions.emplace_back(id,

@@ -56,14 +56,10 @@ namespace rupture
       prm.enter_subsection("Scene");
       prm.enter_subsection("Box");
       {
-        lower_corner = Point<dim>(
-          Utilities::parse_vector<dim>(prm.get("Lower corner"),
-                                       "Scene/Box/Lower corner",
-                                       true));
-        upper_corner = Point<dim>(
-          Utilities::parse_vector<dim>(prm.get("Upper corner"),
-                                       "Scene/Box/Upper corner",
-                                       true));
+        lower_corner = Point<dim>(Utilities::parse_vector<dim>(
+          prm.get("Lower corner"), "Scene/Box/Lower corner", true));
+        upper_corner = Point<dim>(Utilities::parse_vector<dim>(
+          prm.get("Upper corner"), "Scene/Box/Upper corner", true));
         for (unsigned int d = 0; d < dim; ++d)
           AssertThrow(upper_corner[d] > lower_corner[d],
                       ExcMessage("<Scene/Box/Upper corner> must be larger "
@@ -71,8 +67,10 @@ namespace rupture
                                  "coordinate, but coordinate " +
                                  std::to_string(d) + " is not."));
 
-        const Tensor<1, dim> cells = Utilities::parse_vector<dim>(
-          prm.get("Number of cells"), "Scene/Box/Number of cells", true);
+        const Tensor<1, dim> cells =
+          Utilities::parse_vector<dim>(prm.get("Number of cells"),
+                                       "Scene/Box/Number of cells",
+                                       true);
         n_cells.clear();
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -84,8 +82,9 @@ namespace rupture
             n_cells.push_back(static_cast<unsigned int>(c));
           }
 
-        layer_interfaces = Utilities::parse_doubles(
-          prm.get("Layer interfaces"), "Scene/Box/Layer interfaces");
+        layer_interfaces =
+          Utilities::parse_doubles(prm.get("Layer interfaces"),
+                                   "Scene/Box/Layer interfaces");
         std::sort(layer_interfaces.begin(),
                   layer_interfaces.end(),
                   std::greater<double>());
@@ -125,31 +124,28 @@ namespace rupture
                     layer_interfaces.begin(),
                     layer_interfaces.end());
       breaks.push_back(lower_corner[dim - 1]);
-      const double total = upper_corner[dim - 1] - lower_corner[dim - 1];
+      const double       total = upper_corner[dim - 1] - lower_corner[dim - 1];
       const unsigned int n_layers = breaks.size() - 1;
       std::vector<unsigned int> layer_cells(n_layers);
-      unsigned int              assigned = 0;
       for (unsigned int l = 0; l < n_layers; ++l)
         {
           const double share =
             n_cells[dim - 1] * (breaks[l] - breaks[l + 1]) / total;
-          layer_cells[l] = std::max(1u, static_cast<unsigned int>(
-                                          std::round(share)));
-          assigned += layer_cells[l];
+          layer_cells[l] =
+            std::max(1u, static_cast<unsigned int>(std::round(share)));
         }
       // Steps go from the bottom up; layers were listed from the top down.
       for (int l = n_layers - 1; l >= 0; --l)
         for (unsigned int i = 0; i < layer_cells[l]; ++i)
           steps[dim - 1].push_back((breaks[l] - breaks[l + 1]) /
                                    layer_cells[l]);
-      (void)assigned;
 
       GridGenerator::subdivided_hyper_rectangle(
         triangulation, steps, lower_corner, upper_corner, true);
 
       for (const auto &cell : triangulation.active_cell_iterators())
         {
-          const double  z     = cell->center()[dim - 1];
+          const double       z  = cell->center()[dim - 1];
           types::material_id id = 0;
           for (const double interface : layer_interfaces)
             if (z < interface)
@@ -177,11 +173,11 @@ namespace rupture
     }
 
     RUPTURE_REGISTER_SCENE(
-    Box,
-    "box",
-    "a rectangular box, optionally layered, with boundaries west/east, "
-    "south/north (3-D) and bottom/top; for verification.")
-  
+      Box,
+      "box",
+      "a rectangular box, optionally layered, with boundaries west/east, "
+      "south/north (3-D) and bottom/top; for verification.")
+
   } // namespace Scene
 } // namespace rupture
 

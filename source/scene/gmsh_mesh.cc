@@ -82,8 +82,9 @@ namespace rupture
                 if (name.size() >= 2 && name.front() == '"' &&
                     name.back() == '"')
                   name = name.substr(1, name.size() - 2);
-                AssertThrow(in, ExcMessage("The $PhysicalNames section of <" +
-                                           file_name + "> is malformed."));
+                AssertThrow(in,
+                            ExcMessage("The $PhysicalNames section of <" +
+                                       file_name + "> is malformed."));
                 if (group_dim == dim - 1)
                   {
                     AssertThrow(tag >= 0 && tag < 255,
@@ -157,11 +158,11 @@ namespace rupture
     }
 
     RUPTURE_REGISTER_SCENE(GmshMesh,
-                         "gmsh",
-                         "a hexahedral mesh read from a Gmsh .msh file, with "
-                         "physical tags for materials and named physical "
-                         "groups for boundaries.")
-  
+                           "gmsh",
+                           "a hexahedral mesh read from a Gmsh .msh file, with "
+                           "physical tags for materials and named physical "
+                           "groups for boundaries.")
+
   } // namespace Scene
 } // namespace rupture
 

@@ -125,18 +125,20 @@ namespace rupture
       // Build a unit-spaced structured grid in (xi, [eta,] zeta) and map it.
       // Columns 0..n_west are west of the interface, n_west..n_x east of it;
       // rows 0..n_mantle are below the crust-mantle boundary.
-      const double mean_west = 0.5 * (fault_x(0) + fault_x(-depth));
+      const double       mean_west = 0.5 * (fault_x(0) + fault_x(-depth));
       const unsigned int n_west =
-        std::max(1u, static_cast<unsigned int>(std::round(mean_west / cell_size)));
-      const unsigned int n_east = std::max(
-        1u,
-        static_cast<unsigned int>(std::round((length - mean_west) / cell_size)));
+        std::max(1u,
+                 static_cast<unsigned int>(std::round(mean_west / cell_size)));
+      const unsigned int n_east =
+        std::max(1u,
+                 static_cast<unsigned int>(
+                   std::round((length - mean_west) / cell_size)));
       const unsigned int n_crust = std::max(
         1u, static_cast<unsigned int>(std::round(crust_thickness / cell_size)));
-      const unsigned int n_mantle = std::max(
-        1u,
-        static_cast<unsigned int>(
-          std::round((depth - crust_thickness) / cell_size)));
+      const unsigned int n_mantle =
+        std::max(1u,
+                 static_cast<unsigned int>(
+                   std::round((depth - crust_thickness) / cell_size)));
       const unsigned int n_y =
         std::max(1u, static_cast<unsigned int>(std::round(width / cell_size)));
 
@@ -150,7 +152,8 @@ namespace rupture
       Point<dim>         p1, p2;
       for (unsigned int d = 0; d < dim; ++d)
         p2[d] = repetitions[d];
-      GridGenerator::subdivided_hyper_rectangle(serial, repetitions, p1, p2, true);
+      GridGenerator::subdivided_hyper_rectangle(
+        serial, repetitions, p1, p2, true);
 
       const double crust_base = -crust_thickness;
       GridTools::transform(
@@ -165,8 +168,8 @@ namespace rupture
           // East-west: piecewise linear with the interface as a grid line.
           const double xi = p[0];
           const double xf = fault_x(z);
-          q[0] = (xi <= n_west) ? xi / n_west * xf :
-                                  xf + (xi - n_west) / n_east * (length - xf);
+          q[0]            = (xi <= n_west) ? xi / n_west * xf :
+                                             xf + (xi - n_west) / n_east * (length - xf);
           if (dim == 3)
             q[1] = p[1] / n_y * width;
           q[dim - 1] = z;
@@ -212,12 +215,12 @@ namespace rupture
     }
 
     RUPTURE_REGISTER_SCENE(
-    NortheastJapan,
-    "northeast japan",
-    "the GeoFEM paper's 620 x 200 x 200 km block of Northeast Japan with "
-    "crust (id 0), mantle (id 1) and a plate (id 2) below a plane dipping "
-    "28.5 degrees; boundaries west/east, south/north (3-D), bottom/top.")
-  
+      NortheastJapan,
+      "northeast japan",
+      "the GeoFEM paper's 620 x 200 x 200 km block of Northeast Japan with "
+      "crust (id 0), mantle (id 1) and a plate (id 2) below a plane dipping "
+      "28.5 degrees; boundaries west/east, south/north (3-D), bottom/top.")
+
   } // namespace Scene
 } // namespace rupture
 

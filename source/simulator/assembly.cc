@@ -21,7 +21,7 @@ namespace rupture
      */
     template <int dim>
     void
-    local_elasticity_matrices(const FEValues<dim>               &fe_values,
+    local_elasticity_matrices(const FEValues<dim>              &fe_values,
                               const FEValuesExtractors::Vector &u,
                               const Material::ElasticConstants &m,
                               FullMatrix<double>               &k,
@@ -46,9 +46,9 @@ namespace rupture
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
               {
-                k(i, j) += (m.lambda * div[i] * div[j] +
-                            2 * m.mu * (eps[i] * eps[j])) *
-                           JxW;
+                k(i, j) +=
+                  (m.lambda * div[i] * div[j] + 2 * m.mu * (eps[i] * eps[j])) *
+                  JxW;
                 if (mass)
                   (*mass)(i, j) += m.density * (phi[i] * phi[j]) * JxW;
               }
@@ -68,26 +68,28 @@ namespace rupture
 
     const hp::QCollection<dim>     q_cells(QGauss<dim>(fe_degree + 1));
     const hp::QCollection<dim>     q_lumped(QGaussLobatto<dim>(fe_degree + 1));
-    const hp::QCollection<dim - 1> q_faces(QGaussLobatto<dim - 1>(fe_degree + 1));
+    const hp::QCollection<dim - 1> q_faces(
+      QGaussLobatto<dim - 1>(fe_degree + 1));
     const hp::QCollection<dim - 1> q_load_faces(QGauss<dim - 1>(fe_degree + 1));
-    hp::FEValues<dim>     hp_values(fe_collection,
+    hp::FEValues<dim>              hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);
-    hp::FEValues<dim>     hp_lumped(fe_collection,
+    hp::FEValues<dim>              hp_lumped(fe_collection,
                                 q_lumped,
                                 update_values | update_JxW_values);
-    hp::FEFaceValues<dim> hp_faces(fe_collection,
+    hp::FEFaceValues<dim>          hp_faces(fe_collection,
                                    q_faces,
                                    update_values | update_normal_vectors |
                                      update_JxW_values);
-    hp::FEFaceValues<dim> hp_load_faces(fe_collection,
+    hp::FEFaceValues<dim>          hp_load_faces(fe_collection,
                                         q_load_faces,
                                         update_values | update_JxW_values);
 
-    const bool need_mass = (scheme == Scheme::implicit_newmark && !use_lumped_mass);
-    FullMatrix<double> k, mass;
-    Vector<double>     lumped, absorbing, load;
+    const bool need_mass =
+      (scheme == Scheme::implicit_newmark && !use_lumped_mass);
+    FullMatrix<double>                   k, mass;
+    Vector<double>                       lumped, absorbing, load;
     std::vector<types::global_dof_index> dofs;
 
     Tensor<1, dim> g;
@@ -106,18 +108,23 @@ namespace rupture
           dofs.resize(n);
           cell->get_dof_indices(dofs);
 
-          local_elasticity_matrices(fe_values, u, m, k, need_mass ? &mass : nullptr);
-          hanging_constraints.distribute_local_to_global(k, dofs, stiffness_matrix);
+          local_elasticity_matrices(
+            fe_values, u, m, k, need_mass ? &mass : nullptr);
+          hanging_constraints.distribute_local_to_global(k,
+                                                         dofs,
+                                                         stiffness_matrix);
           if (need_mass)
-            hanging_constraints.distribute_local_to_global(mass, dofs, mass_matrix);
+            hanging_constraints.distribute_local_to_global(mass,
+                                                           dofs,
+                                                           mass_matrix);
 
           // Gravity: rho g.
           load.reinit(n);
           if (gravity != 0)
             for (const unsigned int q : fe_values.quadrature_point_indices())
               for (unsigned int i = 0; i < n; ++i)
-                load(i) += m.density * (g * fe_values[u].value(i, q)) *
-                           fe_values.JxW(q);
+                load(i) +=
+                  m.density * (g * fe_values[u].value(i, q)) * fe_values.JxW(q);
 
           if (use_lumped_mass)
             {
@@ -128,9 +135,11 @@ namespace rupture
               lumped.reinit(n);
               for (const unsigned int q : lv.quadrature_point_indices())
                 for (unsigned int i = 0; i < n; ++i)
-                  lumped(i) += m.density * lv[u].value(i, q).norm_square() *
-                               lv.JxW(q);
-              hanging_constraints.distribute_local_to_global(lumped, dofs, lumped_mass);
+                  lumped(i) +=
+                    m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+              hanging_constraints.distribute_local_to_global(lumped,
+                                                             dofs,
+                                                             lumped_mass);
             }
 
           for (const auto f : cell->face_indices())
@@ -138,7 +147,8 @@ namespace rupture
               if (!cell->face(f)->at_boundary())
                 continue;
               const types::boundary_id id = cell->face(f)->boundary_id();
-              for (const auto &[traction_id, traction] : boundary_conditions.tractions)
+              for (const auto &[traction_id, traction] :
+                   boundary_conditions.tractions)
                 if (traction_id == id)
                   {
                     hp_load_faces.reinit(cell, f);
@@ -158,7 +168,8 @@ namespace rupture
                   // for faces normal to a coordinate axis; on oblique faces
                   // the coupling between components is dropped.
                   hp_faces.reinit(cell, f);
-                  const FEFaceValues<dim> &fv = hp_faces.get_present_fe_values();
+                  const FEFaceValues<dim> &fv =
+                    hp_faces.get_present_fe_values();
                   absorbing.reinit(n);
                   const double zp = m.density * m.p_wave_speed();
                   const double zs = m.density * m.s_wave_speed();
@@ -166,18 +177,20 @@ namespace rupture
                     for (unsigned int i = 0; i < n; ++i)
                       {
                         const unsigned int c =
-                          cell->get_fe().system_to_component_index(i).first % dim;
+                          cell->get_fe().system_to_component_index(i).first %
+                          dim;
                         const double nc = fv.normal_vector(q)[c];
                         absorbing(i) += (zp * nc * nc + zs * (1 - nc * nc)) *
                                         fv[u].value(i, q).norm_square() *
                                         fv.JxW(q);
                       }
-                  hanging_constraints.distribute_local_to_global(absorbing,
-                                                                 dofs,
-                                                                 absorbing_damping);
+                  hanging_constraints.distribute_local_to_global(
+                    absorbing, dofs, absorbing_damping);
                 }
             }
-          hanging_constraints.distribute_local_to_global(load, dofs, constant_load);
+          hanging_constraints.distribute_local_to_global(load,
+                                                         dofs,
+                                                         constant_load);
         }
 
     stiffness_matrix.compress(VectorOperation::add);
@@ -194,11 +207,13 @@ namespace rupture
     if (scheme == Scheme::explicit_central_difference)
       {
         const double omega = compute_highest_frequency();
-        stable_time_step   = TimeIntegration::central_difference_stable_step(
-          omega, rayleigh_alpha, rayleigh_beta);
+        stable_time_step =
+          TimeIntegration::central_difference_stable_step(omega,
+                                                          rayleigh_alpha,
+                                                          rayleigh_beta);
         pcout << "   Stable explicit time step: " << std::setprecision(6)
-              << stable_time_step << " s (highest element frequency "
-              << omega << " rad/s)\n";
+              << stable_time_step << " s (highest element frequency " << omega
+              << " rad/s)\n";
         if (time_step == 0)
           time_step = time_parameters.courant_fraction * stable_time_step;
         else
@@ -258,8 +273,8 @@ namespace rupture
   {
     TimerOutput::Scope t(timer, "Assemble system matrix");
     system_matrix = 0;
-    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>          hp_values(fe_collection,
+    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>                    hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);
@@ -277,17 +292,25 @@ namespace rupture
           mass.reinit(n, n);
           dofs.resize(n);
           cell->get_dof_indices(dofs);
-          local_elasticity_matrices(
-            fe_values, u, m, k, (mass_factor != 0 && !use_lumped_mass) ? &mass : nullptr);
+          local_elasticity_matrices(fe_values,
+                                    u,
+                                    m,
+                                    k,
+                                    (mass_factor != 0 && !use_lumped_mass) ?
+                                      &mass :
+                                      nullptr);
           k *= stiffness_factor;
           if (mass_factor != 0 && !use_lumped_mass)
             k.add(mass_factor, mass);
-          increment_constraints.distribute_local_to_global(k, dofs, system_matrix);
+          increment_constraints.distribute_local_to_global(k,
+                                                           dofs,
+                                                           system_matrix);
         }
     system_matrix.compress(VectorOperation::add);
 
     // Diagonal parts: lumped mass and absorbing dashpots.
-    if ((mass_factor != 0 && use_lumped_mass) || (absorbing_factor != 0 && has_absorbing))
+    if ((mass_factor != 0 && use_lumped_mass) ||
+        (absorbing_factor != 0 && has_absorbing))
       {
         for (const auto i : locally_owned_dofs)
           if (!increment_constraints.is_constrained(i))
@@ -312,15 +335,16 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::assemble_load_vector(const double time, VectorType &load) const
+  Simulator<dim>::assemble_load_vector(const double time,
+                                       VectorType  &load) const
   {
     load = constant_load;
     if (!has_body_force)
       return;
     TimerOutput::Scope t(timer, "Assemble loads");
     body_force->set_time(time);
-    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>          hp_values(fe_collection,
+    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>                    hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_quadrature_points |
                                   update_JxW_values);
@@ -343,7 +367,8 @@ namespace rupture
               for (unsigned int d = 0; d < dim; ++d)
                 force[d] = f(d);
               for (unsigned int i = 0; i < n; ++i)
-                local(i) += (force * fe_values[u].value(i, q)) * fe_values.JxW(q);
+                local(i) +=
+                  (force * fe_values[u].value(i, q)) * fe_values.JxW(q);
             }
           hanging_constraints.distribute_local_to_global(local, dofs, load);
         }
@@ -365,11 +390,11 @@ namespace rupture
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);
-    hp::FEValues<dim> hp_lumped(fe_collection,
+    hp::FEValues<dim>          hp_lumped(fe_collection,
                                 q_lumped,
                                 update_values | update_JxW_values);
-    FullMatrix<double> k;
-    double             omega2_max = 0;
+    FullMatrix<double>         k;
+    double                     omega2_max = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -385,7 +410,8 @@ namespace rupture
           std::vector<double> mass(n, 0.);
           for (const unsigned int q : lv.quadrature_point_indices())
             for (unsigned int i = 0; i < n; ++i)
-              mass[i] += m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+              mass[i] +=
+                m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
           LAPACKFullMatrix<double> a(n, n);
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
@@ -407,8 +433,8 @@ namespace rupture
     VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
     u_ghost = displacement;
     exact_displacement->set_time(time);
-    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 2));
-    hp::FEValues<dim>          hp_values(fe_collection,
+    const hp::QCollection<dim>  q_cells(QGauss<dim>(fe_degree + 2));
+    hp::FEValues<dim>           hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_quadrature_points |
                                   update_JxW_values);

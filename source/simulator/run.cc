@@ -43,10 +43,11 @@ namespace rupture
     {
       std::string result;
       for (std::size_t i = 0; i < s.size(); ++i)
-        if (s[i] == '_' && i + 2 < s.size() &&
-            std::isxdigit(s[i + 1]) && std::isxdigit(s[i + 2]))
+        if (s[i] == '_' && i + 2 < s.size() && std::isxdigit(s[i + 1]) &&
+            std::isxdigit(s[i + 2]))
           {
-            result += static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
+            result +=
+              static_cast<char>(std::stoi(s.substr(i + 1, 2), nullptr, 16));
             i += 2;
           }
         else
@@ -67,11 +68,11 @@ namespace rupture
             if (!any_entry)
               out << "\n## " << (path.empty() ? "Global parameters" : path)
                   << "\n\n";
-            any_entry = true;
+            any_entry               = true;
             const std::string value = node.get<std::string>("default_value");
             out << "### `" << demangle(key) << "`\n\n"
-                << "- Default: " << (value.empty() ? "(empty)" : "`" + value + "`")
-                << "\n"
+                << "- Default: "
+                << (value.empty() ? "(empty)" : "`" + value + "`") << "\n"
                 << "- Allowed: " << node.get<std::string>("pattern_description")
                 << "\n\n"
                 << node.get<std::string>("documentation") << "\n\n";
@@ -96,8 +97,7 @@ namespace rupture
       std::string result;
       for (const auto &line : dealii::Utilities::split_string_list(text, '\n'))
         if (!dealii::Utilities::trim(line).empty())
-          result += (result.empty() ? "" : " ") +
-                    dealii::Utilities::trim(line);
+          result += (result.empty() ? "" : " ") + dealii::Utilities::trim(line);
       return result;
     }
 
@@ -109,8 +109,8 @@ namespace rupture
                   ExcMessage("The option --set \"" + assignment +
                              "\" has no '='. Allowed is --set "
                              "\"Section/Subsection/Entry=value\"."));
-      const std::vector<std::string> path = dealii::Utilities::split_string_list(
-        assignment.substr(0, equal), '/');
+      const std::vector<std::string> path =
+        dealii::Utilities::split_string_list(assignment.substr(0, equal), '/');
       const std::string value =
         dealii::Utilities::trim(assignment.substr(equal + 1));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
@@ -148,7 +148,8 @@ namespace rupture
   run_program(const std::vector<std::string> &arguments,
               const MPI_Comm                  communicator)
   {
-    const bool root = (dealii::Utilities::MPI::this_mpi_process(communicator) == 0);
+    const bool root =
+      (dealii::Utilities::MPI::this_mpi_process(communicator) == 0);
     try
       {
         std::string              parameter_file;
@@ -167,7 +168,8 @@ namespace rupture
               {
                 print_format = "markdown";
                 if (i + 1 < arguments.size() &&
-                    (arguments[i + 1] == "markdown" || arguments[i + 1] == "prm"))
+                    (arguments[i + 1] == "markdown" ||
+                     arguments[i + 1] == "prm"))
                   print_format = arguments[++i];
               }
             else if (arg == "--set")

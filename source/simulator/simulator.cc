@@ -172,8 +172,9 @@ namespace rupture
   {
     parse_parameters(prm);
 
-    pcout << "rupture: " << dim << "-D, scheme " << time_parameters.scheme_name()
-          << ", " << dealii::Utilities::MPI::n_mpi_processes(communicator)
+    pcout << "rupture: " << dim << "-D, scheme "
+          << time_parameters.scheme_name() << ", "
+          << dealii::Utilities::MPI::n_mpi_processes(communicator)
           << " MPI rank(s)\n";
 
     make_mesh();
@@ -205,7 +206,7 @@ namespace rupture
     prm.enter_subsection("Discretization");
     n_global_refinements = prm.get_integer("Initial global refinement");
     fe_degree            = prm.get_integer("Polynomial degree");
-    use_lumped_mass          = (prm.get("Mass matrix") == "lumped");
+    use_lumped_mass      = (prm.get("Mass matrix") == "lumped");
     prm.leave_subsection();
 
     prm.enter_subsection("Damping");
@@ -226,8 +227,10 @@ namespace rupture
       Utilities::parse_function<dim>(prm.get("Displacement"),
                                      dim,
                                      "Initial conditions/Displacement");
-    initial_velocity = Utilities::parse_function<dim>(
-      prm.get("Velocity"), dim, "Initial conditions/Velocity");
+    initial_velocity =
+      Utilities::parse_function<dim>(prm.get("Velocity"),
+                                     dim,
+                                     "Initial conditions/Velocity");
     prm.leave_subsection();
 
     prm.enter_subsection("Verification");
@@ -348,23 +351,35 @@ namespace rupture
     increment_constraints.close();
 
     DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_constraints, true);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    hanging_constraints,
+                                    true);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                communicator,
                                                locally_relevant_dofs);
 
-    using Scheme = TimeIntegration::Scheme;
+    using Scheme        = TimeIntegration::Scheme;
     const Scheme scheme = time_parameters.scheme;
     // A scene pays only for what it uses: no mass matrix without inertia or
     // with lumping, no system matrix (hence no solver) in explicit runs.
-    stiffness_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+    stiffness_matrix.reinit(locally_owned_dofs,
+                            locally_owned_dofs,
+                            dsp,
+                            communicator);
     if (scheme == Scheme::implicit_newmark && !use_lumped_mass)
-      mass_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+      mass_matrix.reinit(locally_owned_dofs,
+                         locally_owned_dofs,
+                         dsp,
+                         communicator);
     else
       mass_matrix.clear();
     if (scheme != Scheme::explicit_central_difference)
-      system_matrix.reinit(locally_owned_dofs, locally_owned_dofs, dsp, communicator);
+      system_matrix.reinit(locally_owned_dofs,
+                           locally_owned_dofs,
+                           dsp,
+                           communicator);
     else
       system_matrix.clear();
 
@@ -390,8 +405,10 @@ namespace rupture
   Simulator<dim>::rigid_body_modes() const
   {
     std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(
-      hp::MappingCollection<dim>(MappingQ1<dim>()), dof_handler, support_points);
+    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
+                                           MappingQ1<dim>()),
+                                         dof_handler,
+                                         support_points);
 
     std::vector<unsigned int> component(locally_owned_dofs.n_elements(), 0);
     std::vector<types::global_dof_index> dofs;
@@ -406,7 +423,7 @@ namespace rupture
                 cell->get_fe().system_to_component_index(i).first % dim;
         }
 
-    const unsigned int n_modes = dim * (dim + 1) / 2;
+    const unsigned int               n_modes = dim * (dim + 1) / 2;
     std::vector<std::vector<double>> modes(
       n_modes, std::vector<double>(locally_owned_dofs.n_elements(), 0.));
     unsigned int k = 0;
@@ -420,15 +437,12 @@ namespace rupture
         else
           {
             // Rotations about the z, x and y axes.
-            const unsigned int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-            (void)c1;
-            (void)c2;
             const double rz[3] = {-x[1], x[0], 0};
             const double rx[3] = {0, -x[2], x[1]};
             const double ry[3] = {x[2], 0, -x[0]};
-            modes[3][k] = rz[c];
-            modes[4][k] = rx[c];
-            modes[5][k] = ry[c];
+            modes[3][k]        = rz[c];
+            modes[4][k]        = rx[c];
+            modes[5][k]        = ry[c];
           }
         ++k;
       }
@@ -456,8 +470,10 @@ namespace rupture
                                          parameters.str());
       }
     MPI_Barrier(communicator);
-    volume_output = std::make_unique<Output::VolumeOutput<dim>>(
-      output_directory, materials, communicator);
+    volume_output =
+      std::make_unique<Output::VolumeOutput<dim>>(output_directory,
+                                                  materials,
+                                                  communicator);
   }
 
 
@@ -469,19 +485,20 @@ namespace rupture
     wall_time_start = MPI_Wtime();
     initialize_state();
 
-    std::vector<std::string> columns = {"Time step number",
-                                        "Time (s)",
-                                        "Time step size (s)",
-                                        "Linear solver iterations",
-                                        "Kinetic energy (J)",
-                                        "Strain energy (J)",
-                                        "Work of loads and boundary reactions (J)",
-                                        "Energy dissipated by damping and "
-                                        "absorbing boundaries (J)",
-                                        "Energy balance error (J): kinetic + "
-                                        "strain + dissipated - work - initial "
-                                        "energy",
-                                        "Wall time (s)"};
+    std::vector<std::string> columns = {
+      "Time step number",
+      "Time (s)",
+      "Time step size (s)",
+      "Linear solver iterations",
+      "Kinetic energy (J)",
+      "Strain energy (J)",
+      "Work of loads and boundary reactions (J)",
+      "Energy dissipated by damping and "
+      "absorbing boundaries (J)",
+      "Energy balance error (J): kinetic + "
+      "strain + dissipated - work - initial "
+      "energy",
+      "Wall time (s)"};
     if (exact_displacement)
       columns.emplace_back("L2 error of the displacement (m m^(dim/2))");
     statistics.set_columns(columns);
@@ -516,15 +533,15 @@ namespace rupture
         if (step % screen_interval == 0 || step == n_steps)
           {
             pcout << "*** Step " << step << ": t = " << std::scientific
-                  << std::setprecision(4) << time << " s, dt = "
-                  << std::setprecision(2) << time_step << " s";
+                  << std::setprecision(4) << time
+                  << " s, dt = " << std::setprecision(2) << time_step << " s";
             if (!test_mode)
               {
                 const double elapsed = MPI_Wtime() - wall_time_start;
-                const double left = elapsed / step * (n_steps - step);
+                const double left    = elapsed / step * (n_steps - step);
                 pcout << "  [" << std::fixed << std::setprecision(0)
-                      << 100. * step / n_steps << "%, "
-                      << std::setprecision(1) << left << " s left]";
+                      << 100. * step / n_steps << "%, " << std::setprecision(1)
+                      << left << " s left]";
                 if (time_parameters.scheme !=
                     TimeIntegration::Scheme::explicit_central_difference)
                   pcout << "\n    Linear solver: " << last_linear_iterations
@@ -579,18 +596,18 @@ namespace rupture
   std::vector<double>
   Simulator<dim>::statistics_row() const
   {
-    std::vector<double> row = {
-      static_cast<double>(step),
-      time,
-      time_step,
-      static_cast<double>(last_linear_iterations),
-      kinetic_energy,
-      strain_energy,
-      external_work,
-      damping_dissipation,
-      kinetic_energy + strain_energy + damping_dissipation - external_work -
-        initial_energy,
-      test_mode ? 0. : MPI_Wtime() - wall_time_start};
+    std::vector<double> row = {static_cast<double>(step),
+                               time,
+                               time_step,
+                               static_cast<double>(last_linear_iterations),
+                               kinetic_energy,
+                               strain_energy,
+                               external_work,
+                               damping_dissipation,
+                               kinetic_energy + strain_energy +
+                                 damping_dissipation - external_work -
+                                 initial_energy,
+                               test_mode ? 0. : MPI_Wtime() - wall_time_start};
     if (exact_displacement)
       row.push_back(compute_l2_error(time));
     return row;

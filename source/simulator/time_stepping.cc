@@ -68,7 +68,8 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::compute_damping_force(const VectorType &v, VectorType &y) const
+  Simulator<dim>::compute_damping_force(const VectorType &v,
+                                        VectorType       &y) const
   {
     y = 0;
     if (time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
@@ -118,7 +119,8 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::check_finite(const VectorType &v, const std::string &what) const
+  Simulator<dim>::check_finite(const VectorType  &v,
+                               const std::string &what) const
   {
     const double norm = v.l2_norm();
     if (std::isfinite(norm))
@@ -147,8 +149,10 @@ namespace rupture
 
     // Interpolate the initial fields at the support points of the DoFs.
     std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(
-      hp::MappingCollection<dim>(MappingQ1<dim>()), dof_handler, support_points);
+    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
+                                           MappingQ1<dim>()),
+                                         dof_handler,
+                                         support_points);
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -159,8 +163,9 @@ namespace rupture
           for (unsigned int i = 0; i < dofs.size(); ++i)
             if (locally_owned_dofs.is_element(dofs[i]))
               {
-                const unsigned int c = fe.system_to_component_index(i).first % dim;
-                const Point<dim>  &x = support_points[dofs[i]];
+                const unsigned int c =
+                  fe.system_to_component_index(i).first % dim;
+                const Point<dim> &x   = support_points[dofs[i]];
                 displacement(dofs[i]) = initial_displacement->value(x, c);
                 velocity(dofs[i])     = initial_velocity->value(x, c);
               }
@@ -200,13 +205,15 @@ namespace rupture
           }
         else if (r.l2_norm() > 0)
           {
-            ConstrainedMass        op{mass_matrix, increment_constraints, locally_owned_dofs};
+            ConstrainedMass        op{mass_matrix,
+                               increment_constraints,
+                               locally_owned_dofs};
             DiagonalPreconditioner jacobi;
             jacobi.inverse.reinit(locally_owned_dofs, communicator);
             for (const auto i : locally_owned_dofs)
               jacobi.inverse(i) = 1. / mass_matrix.diag_element(i);
             jacobi.inverse.compress(VectorOperation::insert);
-            SolverControl control(1000, 1e-14 * r.l2_norm());
+            SolverControl        control(1000, 1e-14 * r.l2_norm());
             SolverCG<VectorType> cg(control);
             acceleration = 0;
             cg.solve(op, acceleration, r, jacobi);
@@ -268,8 +275,8 @@ namespace rupture
     VectorType increment(displacement);
     increment -= old_displacement;
     external_work += 0.5 * ((force * increment) + (applied_force * increment));
-    damping_dissipation += 0.5 * ((new_damping_force * increment) +
-                                  (damping_force * increment));
+    damping_dissipation +=
+      0.5 * ((new_damping_force * increment) + (damping_force * increment));
     applied_force = force;
     damping_force = new_damping_force;
 
@@ -289,15 +296,15 @@ namespace rupture
   void
   Simulator<dim>::implicit_step()
   {
-    TimerOutput::Scope t(timer, "Implicit step");
+    TimerOutput::Scope                         t(timer, "Implicit step");
     const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
                                                  time_parameters.gamma,
                                                  time_step);
-    const double gamma = time_parameters.gamma;
+    const double                               gamma = time_parameters.gamma;
 
     const VectorType old_u(displacement), old_v(velocity), old_a(acceleration);
-    VectorType       load(displacement), residual(displacement),
-      tmp(displacement), increment(displacement), cv(displacement);
+    VectorType load(displacement), residual(displacement), tmp(displacement),
+      increment(displacement), cv(displacement);
     assemble_load_vector(time, load);
 
     // New velocity and acceleration as functions of the new displacement
@@ -308,7 +315,10 @@ namespace rupture
       acceleration *= a.a0;
       acceleration.add(-a.a2, old_v, -a.a3, old_a);
       velocity = old_v;
-      velocity.add((1 - gamma) * time_step, old_a, gamma * time_step, acceleration);
+      velocity.add((1 - gamma) * time_step,
+                   old_a,
+                   gamma * time_step,
+                   acceleration);
     };
     const auto compute_residual = [&]() {
       residual = load;
@@ -356,12 +366,15 @@ namespace rupture
     TimerOutput::Scope t(timer, "Explicit step");
     const double       gamma = time_parameters.gamma;
     const VectorType   old_u(displacement);
-    VectorType         load(displacement), residual(displacement),
-      tmp(displacement), cv(displacement);
+    VectorType load(displacement), residual(displacement), tmp(displacement),
+      cv(displacement);
     assemble_load_vector(time, load);
 
     // Predictors: u = u + dt v + dt^2/2 a, v~ = v + (1 - gamma) dt a.
-    displacement.add(time_step, velocity, 0.5 * time_step * time_step, acceleration);
+    displacement.add(time_step,
+                     velocity,
+                     0.5 * time_step * time_step,
+                     acceleration);
     velocity.add((1 - gamma) * time_step, acceleration);
     for (const auto &[dof, v] : kinematic_dofs)
       displacement(dof) = old_u(dof) + v * time_step;
@@ -374,7 +387,7 @@ namespace rupture
     VectorType kw(displacement);
     kw.add(rayleigh_beta, velocity);
     stiffness_matrix.vmult(tmp, kw);
-    kw = tmp;
+    kw       = tmp;
     residual = load;
     residual -= kw;
     compute_damping_force(velocity, cv);
@@ -410,7 +423,7 @@ namespace rupture
   Simulator<dim>::quasi_static_step()
   {
     TimerOutput::Scope t(timer, "Quasi-static step");
-    const VectorType old_u(displacement);
+    const VectorType   old_u(displacement);
     VectorType load(displacement), residual(displacement), tmp(displacement),
       increment(displacement), zero(displacement);
     assemble_load_vector(time, load);
@@ -421,7 +434,8 @@ namespace rupture
     residual -= tmp;
     increment_constraints.set_zero(residual);
     increment = 0;
-    last_linear_iterations = linear_solver.solve(system_matrix, increment, residual);
+    last_linear_iterations =
+      linear_solver.solve(system_matrix, increment, residual);
     increment_constraints.distribute(increment);
     displacement += increment;
     check_finite(displacement, "displacement");

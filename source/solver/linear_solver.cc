@@ -51,12 +51,13 @@ namespace rupture
 
     void
     LinearSolver::initialize(
-      const TrilinosWrappers::SparseMatrix    &matrix,
+      const TrilinosWrappers::SparseMatrix   &matrix,
       const std::vector<std::vector<double>> &rigid_body_modes,
-      const bool                               symmetric,
-      const bool                               higher_order)
+      const bool                              symmetric,
+      const bool                              higher_order)
     {
-      use_cg = (solver_type == "CG" || (solver_type == "automatic" && symmetric));
+      use_cg =
+        (solver_type == "CG" || (solver_type == "automatic" && symmetric));
 
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
@@ -69,7 +70,7 @@ namespace rupture
       data.set_parameters(parameters, unused, matrix);
 
       // Near null space: the rigid-body modes (translations and rotations).
-      const Epetra_Map &map = matrix.trilinos_matrix().RowMap();
+      const Epetra_Map  &map = matrix.trilinos_matrix().RowMap();
       Epetra_MultiVector modes(map, rigid_body_modes.size());
       for (unsigned int m = 0; m < rigid_body_modes.size(); ++m)
         {

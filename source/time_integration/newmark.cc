@@ -68,10 +68,11 @@ namespace rupture
       prm.enter_subsection("Time integration");
       {
         const std::string s = prm.get("Scheme");
-        scheme = (s == "implicit Newmark" ?
-                    Scheme::implicit_newmark :
-                    (s == "quasi-static" ? Scheme::quasi_static :
-                                           Scheme::explicit_central_difference));
+        scheme =
+          (s == "implicit Newmark" ?
+             Scheme::implicit_newmark :
+             (s == "quasi-static" ? Scheme::quasi_static :
+                                    Scheme::explicit_central_difference));
         beta                     = prm.get_double("Newmark beta");
         gamma                    = prm.get_double("Newmark gamma");
         time_step                = prm.get_double("Time step");

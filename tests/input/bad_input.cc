@@ -2,9 +2,9 @@
 // value and what is allowed, a non-zero exit code, and leaves the results
 // of an earlier run in the output directory untouched.
 
-#include "../tests.h"
-
 #include <deal.II/base/mpi.h>
+
+#include "../tests.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -45,7 +45,10 @@ end
     // Keep the message, drop blank lines.
     while (!errors.empty() && (errors[0] == '\n'))
       errors.erase(0, 1);
-    std::printf("* %s\n  exit code: %d\n  %s", title.c_str(), code, errors.c_str());
+    std::printf("* %s\n  exit code: %d\n  %s",
+                title.c_str(),
+                code,
+                errors.c_str());
   }
 } // namespace
 
@@ -121,7 +124,8 @@ main(int argc, char **argv)
         {"valid.prm", "--set", "Time integration/End time=-1"});
 
   std::printf("* earlier results kept: %s\n",
-              tests::read_file("earlier-run/statistics") == "earlier results\n" &&
+              tests::read_file("earlier-run/statistics") ==
+                    "earlier results\n" &&
                   tests::read_file("earlier-run/log.txt") == "earlier log\n" ?
                 "yes" :
                 "no");

@@ -3,9 +3,9 @@
 // has one row per step, solution.pvd lists one .pvtu per output time and
 // each .pvtu exists.
 
-#include "../tests.h"
-
 #include <deal.II/base/mpi.h>
+
+#include "../tests.h"
 
 #include <cstdio>
 #include <regex>
@@ -41,7 +41,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // Only rank 0 reports; all ranks take part in the runs.
-  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   if (!root)
     std::freopen("/dev/null", "w", stdout);
   if (root)
@@ -50,7 +51,7 @@ main(int argc, char **argv)
 
   // Capture the screen to compare it with log.txt.
   std::ostringstream screen;
-  std::streambuf    *old = std::cout.rdbuf(screen.rdbuf());
+  std::streambuf    *old  = std::cout.rdbuf(screen.rdbuf());
   const int          code = rupture::run_program({"run.prm"}, MPI_COMM_WORLD);
   std::cout.rdbuf(old);
   std::printf("exit code: %d\n", code);
@@ -82,9 +83,8 @@ main(int argc, char **argv)
 
   // The recorded parameters repeat the run exactly.
   const auto first = rows;
-  tests::run({"results/parameters.prm",
-              "--set",
-              "Output directory=results-again"});
+  tests::run(
+    {"results/parameters.prm", "--set", "Output directory=results-again"});
   const auto again = tests::read_statistics("results-again/statistics");
   bool       same  = (again.size() == first.size());
   for (unsigned int i = 0; same && i < again.size(); ++i)

@@ -5,9 +5,9 @@
 // The energy budget kinetic + strain + dissipated - work closes to
 // round-off for the average-acceleration rule.
 
-#include "../tests.h"
-
 #include <deal.II/base/mpi.h>
+
+#include "../tests.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,13 +31,14 @@ namespace
     args.insert(args.end(), extra.begin(), extra.end());
     if (tests::run(args) != 0)
       std::printf("run failed\n");
-    const auto rows = tests::read_statistics("output-free-vibration/statistics");
-    Drift      d;
+    const auto rows =
+      tests::read_statistics("output-free-vibration/statistics");
+    Drift        d;
     const double e0 = rows[0][4] + rows[0][5];
     for (unsigned int i = 1; i < rows.size(); ++i)
       {
-        const double e  = rows[i][4] + rows[i][5];
-        const double ep = rows[i - 1][4] + rows[i - 1][5];
+        const double e    = rows[i][4] + rows[i][5];
+        const double ep   = rows[i - 1][4] + rows[i - 1][5];
         d.max_step_change = std::max(d.max_step_change, std::abs(e - ep) / e0);
         d.max_change      = std::max(d.max_change, std::abs(e - e0) / e0);
         d.balance         = std::max(d.balance, std::abs(rows[i][8]) / e0);
@@ -60,16 +61,24 @@ main(int argc, char **argv)
   std::printf("  max relative energy balance error below 1e-11: %s\n",
               d.balance < 1e-11 ? "yes" : "no");
 
-  std::printf("Implicit Newmark, beta = 0.3025, gamma = 0.6 (damping variant):\n");
-  d = drift({"--set", "Time integration/Newmark beta=0.3025",
-             "--set", "Time integration/Newmark gamma=0.6"});
-  std::printf("  energy lost over the run, percent: %.0f\n", -100 * d.final_change);
-  std::printf("  energy decreased: %s\n", d.final_change < -1e-3 ? "yes" : "no");
+  std::printf(
+    "Implicit Newmark, beta = 0.3025, gamma = 0.6 (damping variant):\n");
+  d = drift({"--set",
+             "Time integration/Newmark beta=0.3025",
+             "--set",
+             "Time integration/Newmark gamma=0.6"});
+  std::printf("  energy lost over the run, percent: %.0f\n",
+              -100 * d.final_change);
+  std::printf("  energy decreased: %s\n",
+              d.final_change < -1e-3 ? "yes" : "no");
 
   std::printf("Explicit central difference at half the stable step:\n");
-  d = drift({"--set", "Time integration/Scheme=explicit central difference",
-             "--set", "Time integration/Time step=0",
-             "--set", "Time integration/Courant fraction=0.5"});
+  d = drift({"--set",
+             "Time integration/Scheme=explicit central difference",
+             "--set",
+             "Time integration/Time step=0",
+             "--set",
+             "Time integration/Courant fraction=0.5"});
   // Central difference conserves a modified energy; the energy measured at
   // whole steps oscillates by O((omega dt)^2) around it, here about 1.3%.
   std::printf("  max relative energy change below 2e-2: %s\n",

@@ -4,9 +4,9 @@
 // and 2 times the run stops with a message that the solution is no longer
 // finite, before writing it.
 
-#include "../tests.h"
-
 #include <deal.II/base/mpi.h>
+
+#include "../tests.h"
 
 #include <cmath>
 #include <cstdio>
@@ -15,7 +15,8 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string prm = std::string(SOURCE_DIR) + "/inputs/explicit_blow_up.prm";
+  const std::string                        prm =
+    std::string(SOURCE_DIR) + "/inputs/explicit_blow_up.prm";
 
   // First learn the stable step from the log of a short run.
   tests::run({prm, "--set", "Time integration/End time=1e-3"});
@@ -27,25 +28,24 @@ main(int argc, char **argv)
     {
       std::printf("dt = %.2f x stable step:\n", factor);
       std::string errors;
-      const int   code = tests::run_capture({prm,
-                                   "--set",
-                                   "Time integration/Time step=" +
-                                     std::to_string(factor * stable),
-                                   "--set",
-                                   "Time integration/End time=" +
-                                     std::to_string(4000 * stable)},
-                                  errors);
+      const int   code = tests::run_capture(
+        {prm,
+           "--set",
+           "Time integration/Time step=" + std::to_string(factor * stable),
+           "--set",
+           "Time integration/End time=" + std::to_string(4000 * stable)},
+        errors);
       std::printf("  exit code %d\n", code);
-      std::printf("  stopped as no longer finite, naming the stable limit: %s\n",
-                  (errors.find("no longer finite") != std::string::npos &&
-                   errors.find("stable limit") != std::string::npos) ?
-                    "yes" :
-                    "no");
+      std::printf(
+        "  stopped as no longer finite, naming the stable limit: %s\n",
+        (errors.find("no longer finite") != std::string::npos &&
+         errors.find("stable limit") != std::string::npos) ?
+          "yes" :
+          "no");
       if (code == 0)
         {
-          const auto rows =
-            tests::read_statistics("output-blow-up/statistics");
-          double e0 = rows[0][4] + rows[0][5], emax = e0;
+          const auto rows = tests::read_statistics("output-blow-up/statistics");
+          double     e0 = rows[0][4] + rows[0][5], emax = e0;
           for (const auto &r : rows)
             emax = std::max(emax, r[4] + r[5]);
           std::printf("  energy bounded within 1%%: %s\n",

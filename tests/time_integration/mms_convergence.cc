@@ -4,9 +4,9 @@
 // implicit average-acceleration Newmark (with a solution the Q2 space
 // represents exactly, so that only the time error remains).
 
-#include "../tests.h"
-
 #include <deal.II/base/mpi.h>
+
+#include "../tests.h"
 
 #include <cmath>
 #include <cstdio>
@@ -33,9 +33,10 @@ namespace
     double previous = 0;
     for (unsigned int level = 0; level < n_levels; ++level)
       {
-        const double h  = refine_space ? 0.25 / (1 << level) : 0.5;
-        const double dt = dt0 / (1 << level);
-        std::vector<std::string> args = {std::string(SOURCE_DIR) + "/inputs/" + prm};
+        const double             h  = refine_space ? 0.25 / (1 << level) : 0.5;
+        const double             dt = dt0 / (1 << level);
+        std::vector<std::string> args = {std::string(SOURCE_DIR) + "/inputs/" +
+                                         prm};
         args.insert(args.end(), extra.begin(), extra.end());
         args.push_back("--set");
         args.push_back("Discretization/Initial global refinement=" +
@@ -44,7 +45,7 @@ namespace
         args.push_back("Time integration/Time step=" + std::to_string(dt));
         args.push_back("--set");
         args.push_back("Output directory=output-" + std::to_string(level));
-        const int code = tests::run(args);
+        const int    code  = tests::run(args);
         const double error = final_error("output-" + std::to_string(level));
         if (code != 0)
           std::printf("  run failed with exit code %d\n", code);
@@ -66,18 +67,20 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  study("Implicit Newmark (beta = 1/4, gamma = 1/2), Q1, h and dt halved together:",
-        "mms_space.prm",
-        {},
-        4,
-        true,
-        0.1);
-  study("Explicit central difference, Q1, lumped mass, h and dt halved together:",
-        "mms_space.prm",
-        {"--set", "Time integration/Scheme=explicit central difference"},
-        4,
-        true,
-        0.02);
+  study(
+    "Implicit Newmark (beta = 1/4, gamma = 1/2), Q1, h and dt halved together:",
+    "mms_space.prm",
+    {},
+    4,
+    true,
+    0.1);
+  study(
+    "Explicit central difference, Q1, lumped mass, h and dt halved together:",
+    "mms_space.prm",
+    {"--set", "Time integration/Scheme=explicit central difference"},
+    4,
+    true,
+    0.02);
   study("Implicit Newmark, Q2 (exact in space), dt halved:",
         "mms_time.prm",
         {},

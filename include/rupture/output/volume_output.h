@@ -29,21 +29,21 @@ namespace rupture
     class VolumeOutput
     {
     public:
-      VolumeOutput(const std::string                 &output_directory,
+      VolumeOutput(const std::string                &output_directory,
                    const Material::ElasticMaterials &materials,
-                   const MPI_Comm                     communicator);
+                   const MPI_Comm                    communicator);
 
       void
-      write(const DoFHandler<dim>                &dof_handler,
+      write(const DoFHandler<dim>               &dof_handler,
             const TrilinosWrappers::MPI::Vector &displacement,
             const TrilinosWrappers::MPI::Vector &velocity,
-            const double                          time,
-            const unsigned int                    step);
+            const double                         time,
+            const unsigned int                   step);
 
     private:
-      const std::string                         directory;
-      const Material::ElasticMaterials         &materials;
-      const MPI_Comm                            communicator;
+      const std::string                           directory;
+      const Material::ElasticMaterials           &materials;
+      const MPI_Comm                              communicator;
       std::vector<std::pair<double, std::string>> records;
     };
   } // namespace Output

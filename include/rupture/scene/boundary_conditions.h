@@ -32,8 +32,8 @@ namespace rupture
     public:
       struct Kinematic
       {
-        std::string          name;
-        types::boundary_id   id;
+        std::string        name;
+        types::boundary_id id;
         /// Which components are constrained.
         std::array<bool, dim> components;
         /// Velocity of the constrained components (m/s).
@@ -52,9 +52,9 @@ namespace rupture
         ParameterHandler                                &prm,
         const std::map<std::string, types::boundary_id> &boundary_names);
 
-      std::vector<Kinematic> kinematic;
+      std::vector<Kinematic>                                     kinematic;
       std::vector<std::pair<types::boundary_id, Tensor<1, dim>>> tractions;
-      std::vector<types::boundary_id>                           absorbing;
+      std::vector<types::boundary_id>                            absorbing;
     };
   } // namespace Scene
 } // namespace rupture

@@ -81,21 +81,21 @@ namespace rupture
  * Register a scene class template @p classname (instantiated for 2 and 3
  * dimensions, with a static declare_parameters()) under @p name.
  */
-#define RUPTURE_REGISTER_SCENE(classname, name, description)              \
-  namespace                                                               \
-  {                                                                       \
+#define RUPTURE_REGISTER_SCENE(classname, name, description)               \
+  namespace                                                                \
+  {                                                                        \
     const bool dummy_scene_##classname = ::rupture::Scene::register_scene( \
-      name,                                                               \
-      description,                                                        \
-      &classname<2>::declare_parameters,                                  \
-      []() {                                                              \
-        return std::unique_ptr<::rupture::Scene::Interface<2>>(           \
-          new classname<2>());                                            \
-      },                                                                  \
-      []() {                                                              \
-        return std::unique_ptr<::rupture::Scene::Interface<3>>(           \
-          new classname<3>());                                            \
-      });                                                                 \
+      name,                                                                \
+      description,                                                         \
+      &classname<2>::declare_parameters,                                   \
+      []() {                                                               \
+        return std::unique_ptr<::rupture::Scene::Interface<2>>(            \
+          new classname<2>());                                             \
+      },                                                                   \
+      []() {                                                               \
+        return std::unique_ptr<::rupture::Scene::Interface<3>>(            \
+          new classname<3>());                                             \
+      });                                                                  \
   }
 
 #endif

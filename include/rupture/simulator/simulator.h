@@ -121,28 +121,28 @@ namespace rupture
     std::vector<double>
     statistics_row() const;
 
-    MPI_Comm                  communicator;
-    Output::Log               log;
-    ConditionalOStream        pcout;
-    mutable TimerOutput       timer;
+    MPI_Comm            communicator;
+    Output::Log         log;
+    ConditionalOStream  pcout;
+    mutable TimerOutput timer;
 
     // Parameters.
-    std::string                           output_directory;
-    bool                                  test_mode;
-    unsigned int                          n_global_refinements;
-    unsigned int                          fe_degree;
-    bool                                  use_lumped_mass;
-    double                                rayleigh_alpha;
-    double                                rayleigh_beta;
-    double                                gravity;
-    double                                output_interval;
-    unsigned int                          screen_interval;
-    TimeIntegration::Parameters           time_parameters;
-    std::unique_ptr<FunctionParser<dim>>  body_force;
-    bool                                  has_body_force;
-    std::unique_ptr<FunctionParser<dim>>  initial_displacement;
-    std::unique_ptr<FunctionParser<dim>>  initial_velocity;
-    std::unique_ptr<FunctionParser<dim>>  exact_displacement;
+    std::string                          output_directory;
+    bool                                 test_mode;
+    unsigned int                         n_global_refinements;
+    unsigned int                         fe_degree;
+    bool                                 use_lumped_mass;
+    double                               rayleigh_alpha;
+    double                               rayleigh_beta;
+    double                               gravity;
+    double                               output_interval;
+    unsigned int                         screen_interval;
+    TimeIntegration::Parameters          time_parameters;
+    std::unique_ptr<FunctionParser<dim>> body_force;
+    bool                                 has_body_force;
+    std::unique_ptr<FunctionParser<dim>> initial_displacement;
+    std::unique_ptr<FunctionParser<dim>> initial_velocity;
+    std::unique_ptr<FunctionParser<dim>> exact_displacement;
 
     // Components.
     std::unique_ptr<Scene::Interface<dim>> scene;
@@ -185,8 +185,8 @@ namespace rupture
     /// Total force applied to the body at the current time (loads plus
     /// reactions on kinematic boundaries) and damping force, for the energy
     /// budget.
-    VectorType   applied_force;
-    VectorType   damping_force;
+    VectorType applied_force;
+    VectorType damping_force;
 
     // Energy budget (J) and per-step counters. The balance is
     // kinetic + strain + dissipated - work - initial energy.
@@ -200,7 +200,7 @@ namespace rupture
     double       next_output_time;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
-    Output::Statistics                        statistics;
+    Output::Statistics                         statistics;
   };
 } // namespace rupture
 

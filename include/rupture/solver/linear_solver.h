@@ -35,10 +35,10 @@ namespace rupture
        * selects CG under the 'automatic' choice.
        */
       void
-      initialize(const TrilinosWrappers::SparseMatrix    &matrix,
+      initialize(const TrilinosWrappers::SparseMatrix   &matrix,
                  const std::vector<std::vector<double>> &rigid_body_modes,
-                 const bool                               symmetric,
-                 const bool                               higher_order);
+                 const bool                              symmetric,
+                 const bool                              higher_order);
 
       /**
        * Solve matrix x = b to the relative tolerance; returns the number of
@@ -56,10 +56,10 @@ namespace rupture
       }
 
     private:
-      std::string                                       solver_type;
-      double                                            relative_tolerance;
-      unsigned int                                      max_iterations;
-      bool                                              use_cg = true;
+      std::string                                        solver_type;
+      double                                             relative_tolerance;
+      unsigned int                                       max_iterations;
+      bool                                               use_cg = true;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     };
   } // namespace Solver
