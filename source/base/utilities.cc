@@ -18,7 +18,8 @@ namespace rupture
     std::unique_ptr<FunctionParser<dim>>
     parse_function(const std::string &expression,
                    const unsigned int n_components,
-                   const std::string &entry_name)
+                   const std::string &entry_name,
+                   const std::string &variable_names)
     {
       auto function = std::make_unique<FunctionParser<dim>>(n_components);
       std::vector<std::string> parts;
@@ -36,7 +37,9 @@ namespace rupture
                              expression + ">."));
 
       const std::string variables =
-        (dim == 1 ? "x,t" : (dim == 2 ? "x,y,t" : "x,y,z,t"));
+        !variable_names.empty() ?
+          variable_names :
+          (dim == 1 ? "x,t" : (dim == 2 ? "x,y,t" : "x,y,z,t"));
       const std::map<std::string, double> constants = {{"pi", numbers::PI}};
       // The parser reports its errors on std::cerr; keep them for the
       // message instead.
@@ -45,7 +48,10 @@ namespace rupture
       bool               ok       = true;
       try
         {
-          function->initialize(variables, parts, constants, true);
+          function->initialize(variables,
+                               parts,
+                               constants,
+                               variables.find(",t") != std::string::npos);
           // Evaluate once so that errors such as unknown variables surface
           // here rather than in the middle of a run.
           Vector<double> value(n_components);
@@ -177,10 +183,12 @@ namespace rupture
     template std::unique_ptr<FunctionParser<2>>
     parse_function<2>(const std::string &,
                       const unsigned int,
+                      const std::string &,
                       const std::string &);
     template std::unique_ptr<FunctionParser<3>>
     parse_function<3>(const std::string &,
                       const unsigned int,
+                      const std::string &,
                       const std::string &);
     template Tensor<1, 2>
     parse_vector<2>(const std::string &, const std::string &, const bool);

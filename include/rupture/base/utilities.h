@@ -24,13 +24,15 @@ namespace rupture
      * position and time with @p n_components components. The components are
      * separated by ';', the variables are x, y (, z) and t, and the constant
      * pi is known. An empty string is the zero function. @p entry_name is
-     * used in the error message.
+     * used in the error message. @p variables overrides the variable names
+     * (e.g. "x,y,z" for a function of position only).
      */
     template <int dim>
     std::unique_ptr<FunctionParser<dim>>
     parse_function(const std::string &expression,
                    const unsigned int n_components,
-                   const std::string &entry_name);
+                   const std::string &entry_name,
+                   const std::string &variables = "");
 
     /**
      * Parse a comma separated list of exactly @p dim numbers into a Tensor,

@@ -1,0 +1,79 @@
+#ifndef rupture_fault_contact_h
+#define rupture_fault_contact_h
+
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    /**
+     * The state of a fault point after the return mapping.
+     */
+    enum class ContactStatus
+    {
+      stick,
+      slip,
+      open
+    };
+
+    /**
+     * What the return mapping computes at one fault point.
+     */
+    template <int dim>
+    struct ContactResponse
+    {
+      /// Total traction (Pa) exerted by the plus side on the minus side,
+      /// T = sigma n with n pointing from minus to plus. Compression is
+      /// T.n < 0.
+      Tensor<1, dim> traction;
+      /// The consistent tangent dT/d(delta) (Pa/m); nonsymmetric when
+      /// slipping (the paper's D^ep, eq. 11).
+      Tensor<2, dim> tangent;
+      ContactStatus  status = ContactStatus::stick;
+      /// Length of the plastic slip increment of the step (m).
+      double slip_increment = 0;
+      /// Accumulated plastic (frictional) slip vector after the step (m).
+      Tensor<1, dim> plastic_slip;
+      /// Friction coefficient in effect.
+      double friction = 0;
+      /// True if slip weakening is steeper than the tangential penalty, so
+      /// that the tangent is singular or indefinite (snap-back).
+      bool unstable_softening = false;
+    };
+
+    /**
+     * Penalty contact with Coulomb friction at one fault point, by the
+     * return mapping of the GeoFEM paper (section 3.2).
+     *
+     * @p delta is the relative displacement u+ - u- (m), @p normal the unit
+     * normal from the minus to the plus side, @p initial_traction the
+     * traction (Pa) of the initial stress that the displacement field does
+     * not carry (zero when the stress comes from a loading step). The
+     * normal penalty p_n (Pa/m) resists interpenetration, and the fault
+     * opens with zero traction under tension. The tangential penalty p_t
+     * (Pa/m) gives the elastic trial traction, which is returned to the
+     * friction strength mu |T_n| + cohesion when it exceeds it, with mu
+     * from @p law as a function of the slip increment of the step. The
+     * tangent is derived consistently with that mapping, so Newton's method
+     * converges quadratically.
+     */
+    template <int dim>
+    ContactResponse<dim>
+    return_map(const Tensor<1, dim>      &delta,
+               const Tensor<1, dim>      &normal,
+               const Tensor<1, dim>      &initial_traction,
+               const double               normal_penalty,
+               const double               tangential_penalty,
+               const Tensor<1, dim>      &old_plastic_slip,
+               const Friction::State     &old_state,
+               const Friction::Interface &law,
+               const Point<3>            &x,
+               const double               dt);
+  } // namespace Fault
+} // namespace rupture
+
+#endif

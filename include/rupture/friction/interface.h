@@ -1,0 +1,121 @@
+#ifndef rupture_friction_interface_h
+#define rupture_friction_interface_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  using namespace dealii;
+
+  /**
+   * Friction laws. A law is pointwise physics: it sees the position, the
+   * state of a fault point at the start of a step and the slip it makes in
+   * the step, never a mesh, a vector or MPI, so a small test can exercise
+   * it fully. The contact algorithm asks it for the friction coefficient
+   * as a function of the slip increment of the step, which covers slip
+   * weakening (mu of the slip path) and rate-and-state laws (mu of the slip
+   * rate increment / dt and of the state variables evolved over the step).
+   */
+  namespace Friction
+  {
+    /**
+     * What a fault point remembers between steps.
+     */
+    struct State
+    {
+      /// Accumulated length of the slip path (m): the paper's |u_t^p|.
+      double slip_path = 0;
+      /// Magnitude of the slip rate over the last step (m/s).
+      double slip_rate = 0;
+      /// State variables of rate-and-state laws (theta, ...), in the units
+      /// the law documents.
+      std::vector<double> variables;
+    };
+
+    class Interface
+    {
+    public:
+      virtual ~Interface() = default;
+
+      virtual void
+      parse_parameters(ParameterHandler &prm) = 0;
+
+      /**
+       * Set up the state variables of a point at the start of a run.
+       */
+      virtual void
+      initialize_state(const Point<3> &x, State &state) const;
+
+      /**
+       * The friction coefficient after a slip increment @p slip_increment
+       * (>= 0, m) in a step of length @p dt from the state @p old, and its
+       * derivative with respect to the slip increment (1/m).
+       */
+      virtual double
+      coefficient(const Point<3> &x,
+                  const State    &old,
+                  const double    slip_increment,
+                  const double    dt,
+                  double         &derivative) const = 0;
+
+      /**
+       * The cohesion (Pa) at @p x: strength = mu |sigma_n| + cohesion.
+       */
+      virtual double
+      cohesion(const Point<3> &x) const = 0;
+
+      /**
+       * The state after the step.
+       */
+      virtual void
+      update_state(const Point<3> &x,
+                   const State    &old,
+                   const double    slip_increment,
+                   const double    dt,
+                   State          &updated) const;
+    };
+
+    /**
+     * Register a law. Use RUPTURE_REGISTER_FRICTION_LAW.
+     */
+    bool
+    register_law(const std::string                                 &name,
+                 const std::string                                 &description,
+                 const std::function<void(ParameterHandler &)>     &declare,
+                 const std::function<std::unique_ptr<Interface>()> &create);
+
+    /**
+     * Declare "Fault/Friction law" and the subsections of all laws.
+     */
+    void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Create and parse the law named in "Fault/Friction law" (the caller
+     * is inside the "Fault" subsection).
+     */
+    std::unique_ptr<Interface>
+    create(ParameterHandler &prm);
+  } // namespace Friction
+} // namespace rupture
+
+#define RUPTURE_REGISTER_FRICTION_LAW(classname, name, description)            \
+  namespace                                                                    \
+  {                                                                            \
+    const bool dummy_friction_##classname = ::rupture::Friction::register_law( \
+      name,                                                                    \
+      description,                                                             \
+      &classname::declare_parameters,                                          \
+      []() {                                                                   \
+        return std::unique_ptr<::rupture::Friction::Interface>(                \
+          new classname());                                                    \
+      });                                                                      \
+  }
+
+#endif

@@ -1,0 +1,50 @@
+#ifndef rupture_friction_linear_slip_weakening_h
+#define rupture_friction_linear_slip_weakening_h
+
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/function_parser.h>
+
+namespace rupture
+{
+  namespace Friction
+  {
+    /**
+     * Linear slip weakening (the GeoFEM paper's eq. 2 and 6): the friction
+     * coefficient falls from mu_0 to mu_d as the slip path length s grows
+     * to L_d, and stays at mu_d beyond:
+     *   mu(s) = mu_0 - (mu_0 - mu_d) s / L_d  for s < L_d,  mu_d otherwise.
+     * mu_0, mu_d, L_d and the cohesion are functions of position.
+     */
+    class LinearSlipWeakening : public Interface
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      void
+      initialize_state(const Point<3> &x, State &state) const override;
+
+      double
+      coefficient(const Point<3> &x,
+                  const State    &old,
+                  const double    slip_increment,
+                  const double    dt,
+                  double         &derivative) const override;
+
+      double
+      cohesion(const Point<3> &x) const override;
+
+    private:
+      std::unique_ptr<FunctionParser<3>> static_coefficient;
+      std::unique_ptr<FunctionParser<3>> dynamic_coefficient;
+      std::unique_ptr<FunctionParser<3>> weakening_distance;
+      std::unique_ptr<FunctionParser<3>> cohesion_function;
+    };
+  } // namespace Friction
+} // namespace rupture
+
+#endif

@@ -1,0 +1,144 @@
+#include <rupture/fault/contact.h>
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <cmath>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    template <int dim>
+    ContactResponse<dim>
+    return_map(const Tensor<1, dim>      &delta,
+               const Tensor<1, dim>      &n,
+               const Tensor<1, dim>      &t0,
+               const double               p_n,
+               const double               p_t,
+               const Tensor<1, dim>      &old_plastic_slip,
+               const Friction::State     &old_state,
+               const Friction::Interface &law,
+               const Point<3>            &x,
+               const double               dt)
+    {
+      ContactResponse<dim> r;
+      const Tensor<2, dim> nn = outer_product(n, n);
+      const Tensor<2, dim> projector =
+        Tensor<2, dim>(unit_symmetric_tensor<dim>()) - nn;
+
+      const double         normal_traction = t0 * n + p_n * (delta * n);
+      const Tensor<1, dim> delta_t         = projector * delta;
+      const Tensor<1, dim> t0_t            = projector * t0;
+
+      double derivative = 0;
+      if (normal_traction >= 0)
+        {
+          // Open: no traction. The plastic slip follows the relative
+          // displacement, so that the spring is unstretched on closing.
+          r.status         = ContactStatus::open;
+          r.traction       = 0;
+          r.tangent        = 0;
+          r.plastic_slip   = delta_t + t0_t / p_t;
+          r.slip_increment = (r.plastic_slip - old_plastic_slip).norm();
+          r.friction =
+            law.coefficient(x, old_state, r.slip_increment, dt, derivative);
+          return r;
+        }
+
+      const double         pressure = -normal_traction;
+      const Tensor<1, dim> trial =
+        t0_t + p_t * (delta_t - projector * old_plastic_slip);
+      const double trial_norm = trial.norm();
+      const double cohesion   = law.cohesion(x);
+
+      double mu = law.coefficient(x, old_state, 0., dt, derivative);
+      if (trial_norm <= mu * pressure + cohesion)
+        {
+          r.status       = ContactStatus::stick;
+          r.traction     = normal_traction * n + trial;
+          r.tangent      = p_n * nn + p_t * projector;
+          r.plastic_slip = old_plastic_slip;
+          r.friction     = mu;
+          return r;
+        }
+
+      // Slip: find the slip increment l in (0, |T_trial|/p_t] with
+      // g(l) = |T_trial| - p_t l - mu(l) |T_n| - c = 0, by Newton's method
+      // safeguarded with bisection (g(0) > 0 >= g(upper)).
+      const auto g = [&](const double l, double &dg) {
+        double       dmu = 0;
+        const double m   = law.coefficient(x, old_state, l, dt, dmu);
+        dg               = -p_t - dmu * pressure;
+        return trial_norm - p_t * l - m * pressure - cohesion;
+      };
+      double lower = 0, upper = trial_norm / p_t, l = 0;
+      for (unsigned int it = 0; it < 100; ++it)
+        {
+          double       dg;
+          const double value = g(l, dg);
+          if (std::abs(value) <= 1e-14 * trial_norm)
+            break;
+          if (value > 0)
+            lower = l;
+          else
+            upper = l;
+          double next = (dg < 0) ? l - value / dg : 0.5 * (lower + upper);
+          if (!(next > lower && next < upper))
+            next = 0.5 * (lower + upper);
+          l = next;
+          if (upper - lower <= 1e-15 * trial_norm / p_t)
+            break;
+        }
+
+      mu = law.coefficient(x, old_state, l, dt, derivative);
+      const double         tau = trial_norm - p_t * l;
+      const Tensor<1, dim> e   = trial / trial_norm;
+      const double         k   = -derivative * pressure;
+
+      r.status         = ContactStatus::slip;
+      r.slip_increment = l;
+      r.friction       = mu;
+      r.traction       = normal_traction * n + tau * e;
+      r.plastic_slip   = old_plastic_slip + l * e;
+
+      // Consistent tangent:
+      //   D = p_n n n + tau p_t / |T_trial| (I - e e - n n)
+      //       + e (x) (-k e - mu p_n n) / (1 - k / p_t),
+      // with k = -mu'(l) |T_n| the weakening slope.
+      const double denominator = 1 - k / p_t;
+      r.unstable_softening     = (denominator <= 0);
+      const Tensor<2, dim> ee  = outer_product(e, e);
+      r.tangent = p_n * nn + (tau * p_t / trial_norm) * (projector - ee);
+      if (!r.unstable_softening)
+        r.tangent += outer_product(e, -k * e - mu * p_n * n) / denominator;
+      else
+        r.tangent += outer_product(e, -mu * p_n * n);
+      return r;
+    }
+
+
+
+    template ContactResponse<2>
+    return_map(const Tensor<1, 2> &,
+               const Tensor<1, 2> &,
+               const Tensor<1, 2> &,
+               const double,
+               const double,
+               const Tensor<1, 2> &,
+               const Friction::State &,
+               const Friction::Interface &,
+               const Point<3> &,
+               const double);
+    template ContactResponse<3>
+    return_map(const Tensor<1, 3> &,
+               const Tensor<1, 3> &,
+               const Tensor<1, 3> &,
+               const double,
+               const double,
+               const Tensor<1, 3> &,
+               const Friction::State &,
+               const Friction::Interface &,
+               const Point<3> &,
+               const double);
+  } // namespace Fault
+} // namespace rupture
