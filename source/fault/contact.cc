@@ -31,7 +31,7 @@ namespace rupture
       const Tensor<1, dim> t0_t            = projector * t0;
 
       double derivative = 0;
-      if (normal_traction >= 0)
+      if (normal_traction > 0)
         {
           // Open: no traction. The plastic slip follows the relative
           // displacement, so that the spring is unstretched on closing.

@@ -4,6 +4,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/hp/mapping_collection.h>
@@ -137,10 +138,34 @@ namespace rupture
     prm.leave_subsection();
 
     Scene::declare_parameters(prm);
+    Fault::Fault<dim>::declare_parameters(prm);
     Material::ElasticMaterials::declare_parameters(prm);
     Scene::BoundaryConditions<dim>::declare_parameters(prm);
     TimeIntegration::Parameters::declare_parameters(prm);
     Solver::LinearSolver::declare_parameters(prm);
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Newton force tolerance",
+                        "1e-8",
+                        Patterns::Double(0, 1),
+                        "Newton's method (with a fault) has converged when "
+                        "the force residual has fallen below this fraction "
+                        "of its first value (or of the load) ...");
+      prm.declare_entry("Newton displacement tolerance",
+                        "1e-6",
+                        Patterns::Double(0, 1),
+                        "... and the last displacement increment is below "
+                        "this fraction of the displacement change of the "
+                        "step (the paper's two criteria, Fig. 6). A step in "
+                        "which every fault node stuck in the last two "
+                        "iterations is linear and needs only the first.");
+      prm.declare_entry("Maximum Newton iterations",
+                        "25",
+                        Patterns::Integer(1),
+                        "A step that has not converged after this many "
+                        "Newton iterations stops the run with a diagnosis.");
+    }
+    prm.leave_subsection();
   }
 
 
@@ -166,7 +191,9 @@ namespace rupture
     , strain_energy(0)
     , external_work(0)
     , damping_dissipation(0)
+    , fault_work(0)
     , last_linear_iterations(0)
+    , last_newton_iterations(0)
     , wall_time_start(0)
     , next_output_time(0)
   {
@@ -246,6 +273,13 @@ namespace rupture
     screen_interval = prm.get_integer("Screen output interval");
     prm.leave_subsection();
 
+    prm.enter_subsection("Solver");
+    newton_force_tolerance = prm.get_double("Newton force tolerance");
+    newton_displacement_tolerance =
+      prm.get_double("Newton displacement tolerance");
+    max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+    prm.leave_subsection();
+
     time_parameters.parse_parameters(prm);
     if (time_parameters.scheme ==
         TimeIntegration::Scheme::explicit_central_difference)
@@ -253,7 +287,17 @@ namespace rupture
     materials.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
 
-    scene = Scene::create<dim>(prm);
+    scene   = Scene::create<dim>(prm);
+    fault   = Fault::Fault<dim>::create(prm);
+    n_sides = fault ? 2 : 1;
+    AssertThrow(!(fault &&
+                  time_parameters.scheme ==
+                    TimeIntegration::Scheme::explicit_central_difference),
+                ExcMessage("<Fault/Model> = penalty contact works with the "
+                           "implicit Newmark and quasi-static schemes; the "
+                           "explicit scheme's fault (traction at split "
+                           "nodes) is not available yet. Choose <Time "
+                           "integration/Scheme> = implicit Newmark."));
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();
     AssertThrow(!(has_absorbing && time_parameters.scheme ==
@@ -301,9 +345,23 @@ namespace rupture
   {
     TimerOutput::Scope t(timer, "Set up DoFs");
 
+    // One displacement field per side: component s*dim + c is component c
+    // on side s, and FE_Nothing gives the other side no DoFs on a cell.
     fe_collection = hp::FECollection<dim>();
-    fe_collection.push_back(FESystem<dim>(FE_Q<dim>(fe_degree), dim));
+    if (!fault)
+      fe_collection.push_back(FESystem<dim>(FE_Q<dim>(fe_degree), dim));
+    else
+      {
+        fe_collection.push_back(
+          FESystem<dim>(FE_Q<dim>(fe_degree), dim, FE_Nothing<dim>(), dim));
+        fe_collection.push_back(
+          FESystem<dim>(FE_Nothing<dim>(), dim, FE_Q<dim>(fe_degree), dim));
+      }
     dof_handler.reinit(triangulation);
+    if (fault)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          cell->set_active_fe_index(fault->side(cell));
     dof_handler.distribute_dofs(fe_collection);
 
     locally_owned_dofs = dof_handler.locally_owned_dofs();
@@ -312,6 +370,18 @@ namespace rupture
     hanging_constraints.clear();
     hanging_constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    if (fault)
+      {
+        std::vector<double> shear_modulus;
+        for (unsigned int m = 0; m < materials.n_materials(); ++m)
+          shear_modulus.push_back(materials.get(m).mu);
+        fault->setup(dof_handler,
+                     locally_owned_dofs,
+                     locally_relevant_dofs,
+                     hanging_constraints,
+                     shear_modulus,
+                     communicator);
+      }
     hanging_constraints.close();
 
     // Kinematic boundary conditions: collect the constrained DoFs of each
@@ -355,6 +425,8 @@ namespace rupture
                                     dsp,
                                     hanging_constraints,
                                     true);
+    if (fault)
+      fault->add_sparsity(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp,
                                                locally_owned_dofs,
                                                communicator,
@@ -388,6 +460,7 @@ namespace rupture
                           &acceleration,
                           &applied_force,
                           &damping_force,
+                          &contact_force,
                           &constant_load})
       v->reinit(locally_owned_dofs, communicator);
     if (use_lumped_mass)
@@ -396,6 +469,10 @@ namespace rupture
       absorbing_damping.reinit(locally_owned_dofs, communicator);
 
     pcout << "   Degrees of freedom: " << dof_handler.n_dofs() << "\n";
+    if (fault)
+      pcout << "   Fault: " << fault->n_split_nodes() << " split node pairs, "
+            << fault->n_welded_nodes() << " welded interface nodes\n";
+    null_space = rigid_body_modes();
   }
 
 
@@ -496,11 +573,24 @@ namespace rupture
       "Energy dissipated by damping and "
       "absorbing boundaries (J)",
       "Energy balance error (J): kinetic + "
-      "strain + dissipated - work - initial "
+      "strain + dissipated + fault work - work - initial "
       "energy",
       "Wall time (s)"};
     if (exact_displacement)
       columns.emplace_back("L2 error of the displacement (m m^(dim/2))");
+    if (fault)
+      for (const std::string c :
+           {"Newton iterations",
+            "Slipping fault nodes",
+            "Open fault nodes",
+            "Slipping area (m^2, m in 2-D)",
+            "Maximum slip (m)",
+            "Maximum slip rate (m/s)",
+            "Seismic moment (N m, N in 2-D)",
+            "Moment magnitude Mw (3-D only)",
+            "Frictional dissipation (J)",
+            "Work done on the fault: penalty springs plus friction (J)"})
+        columns.push_back(c);
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
     write_step_output(true);
@@ -535,6 +625,15 @@ namespace rupture
             pcout << "*** Step " << step << ": t = " << std::scientific
                   << std::setprecision(4) << time
                   << " s, dt = " << std::setprecision(2) << time_step << " s";
+            if (fault)
+              {
+                const Fault::Statistics f = fault->statistics();
+                pcout << "\n    Newton: " << last_newton_iterations
+                      << " iterations; fault: " << f.n_slipping << " slipping, "
+                      << f.n_open << " open nodes, max slip "
+                      << std::setprecision(3) << f.max_slip
+                      << " m, max slip rate " << f.max_slip_rate << " m/s";
+              }
             if (!test_mode)
               {
                 const double elapsed = MPI_Wtime() - wall_time_start;
@@ -562,13 +661,23 @@ namespace rupture
           << "   Kinetic energy       " << last[4] << " J\n"
           << "   Strain energy        " << last[5] << " J\n"
           << "   Work of loads        " << last[6] << " J\n"
-          << "   Dissipated energy    " << last[7] << " J\n"
-          << "   Max |displacement|   " << displacement.linfty_norm() << " m\n";
+          << "   Dissipated energy    " << last[7] << " J\n";
+    if (fault)
+      {
+        const Fault::Statistics f = fault->statistics();
+        pcout << "   Fault work           " << fault_work << " J\n"
+              << "   Frictional energy    " << f.frictional_energy << " J\n"
+              << "   Max slip             " << f.max_slip << " m\n"
+              << "   Slipping nodes       " << f.n_slipping << " of "
+              << f.n_nodes << "\n";
+      }
+    pcout << "   Max |displacement|   " << displacement.linfty_norm() << " m\n";
     if (exact_displacement)
-      pcout << "   L2 error             " << last.back() << "\n";
+      pcout << "   L2 error             " << last[10] << "\n";
     pcout << std::defaultfloat;
     // The balance error relative to the largest energy in play.
     const double scale = std::max({std::abs(last[4]) + std::abs(last[5]),
+                                   std::abs(fault_work),
                                    std::abs(last[6]),
                                    std::abs(last[7]),
                                    std::abs(initial_energy),
@@ -605,11 +714,29 @@ namespace rupture
                                external_work,
                                damping_dissipation,
                                kinetic_energy + strain_energy +
-                                 damping_dissipation - external_work -
-                                 initial_energy,
+                                 damping_dissipation + fault_work -
+                                 external_work - initial_energy,
                                test_mode ? 0. : MPI_Wtime() - wall_time_start};
     if (exact_displacement)
       row.push_back(compute_l2_error(time));
+    if (fault)
+      {
+        const Fault::Statistics f  = fault->statistics();
+        const double            mw = (dim == 3 && f.seismic_moment > 0) ?
+                                       2. / 3. * (std::log10(f.seismic_moment) - 9.1) :
+                                       0.;
+        for (const double v : {static_cast<double>(last_newton_iterations),
+                               static_cast<double>(f.n_slipping),
+                               static_cast<double>(f.n_open),
+                               f.slipping_area,
+                               f.max_slip,
+                               f.max_slip_rate,
+                               f.seismic_moment,
+                               mw,
+                               f.frictional_energy,
+                               fault_work})
+          row.push_back(v);
+      }
     return row;
   }
 

@@ -7,6 +7,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace rupture
@@ -177,6 +178,9 @@ namespace rupture
 
     VectorType load(locally_owned_dofs, communicator);
     assemble_load_vector(0, load);
+    contact_force = 0;
+    if (fault)
+      assemble_contact(contact_force, false, 1);
 
     if (time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
       {
@@ -192,6 +196,7 @@ namespace rupture
         r -= tmp;
         compute_damping_force(velocity, tmp);
         r -= tmp;
+        r -= contact_force;
         increment_constraints.set_zero(r);
         if (use_lumped_mass)
           {
@@ -238,7 +243,7 @@ namespace rupture
     for (const auto i : locally_owned_dofs)
       if (increment_constraints.is_constrained(i) ||
           time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
-        applied_force(i) = ku(i) + ma(i) + damping_force(i);
+        applied_force(i) = ku(i) + ma(i) + damping_force(i) + contact_force(i);
     applied_force.compress(VectorOperation::insert);
 
     strain_energy = 0.5 * (displacement * ku);
@@ -294,6 +299,142 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::assemble_contact(VectorType  &force,
+                                   const bool   with_tangent,
+                                   const double sign)
+  {
+    TimerOutput::Scope t(timer, "Fault contact");
+    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
+    u_ghost = displacement;
+    fault->assemble(u_ghost,
+                    time_step,
+                    hanging_constraints,
+                    force,
+                    increment_constraints,
+                    with_tangent ? &system_matrix : nullptr,
+                    sign);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_step(const VectorType            &old_u,
+                             const std::function<void()> &update_rates,
+                             const std::function<void()> &compute_residual,
+                             VectorType                  &residual)
+  {
+    VectorType free_residual(residual), increment(residual), scratch(residual);
+
+    displacement = old_u;
+    add_kinematic_increment(displacement);
+    hanging_constraints.distribute(displacement);
+
+    double        reference      = 0;
+    double        increment_norm = 0;
+    unsigned long last_signature = 0;
+    last_linear_iterations       = 0;
+    for (unsigned int k = 0;; ++k)
+      {
+        update_rates();
+        compute_residual();
+        free_residual = residual;
+        increment_constraints.set_zero(free_residual);
+        const double norm = free_residual.l2_norm();
+        AssertThrow(std::isfinite(norm),
+                    ExcMessage("At step " + std::to_string(step) +
+                               " the force residual is no longer finite."));
+
+        if (!fault)
+          {
+            // Linear: the first solve is exact up to the solver tolerance.
+            if (k == 1)
+              break;
+          }
+        else
+          {
+            const unsigned long signature = fault->status_signature();
+            if (k == 0)
+              reference = std::max(norm, 1e-300);
+            else
+              {
+                // The paper's two criteria (Fig. 6). A step in which every
+                // node stuck in this and the last iteration was linear, so
+                // its one solve is exact.
+                const double change = [&]() {
+                  scratch = displacement;
+                  scratch -= old_u;
+                  return scratch.l2_norm();
+                }();
+                const bool force_ok =
+                  norm <= newton_force_tolerance * reference;
+                const bool displacement_ok =
+                  increment_norm <= newton_displacement_tolerance * change;
+                const bool linear =
+                  (signature == last_signature) && fault->all_stuck();
+                if (force_ok && (displacement_ok || linear))
+                  break;
+              }
+            if (k == max_newton_iterations)
+              {
+                const Fault::Statistics f = fault->statistics();
+                std::ostringstream      message;
+                message << "Newton's method did not converge in step " << step
+                        << " (t = " << time << " s) within "
+                        << max_newton_iterations
+                        << " iterations: the force residual fell to "
+                        << norm / reference << " of its first value (wanted "
+                        << newton_force_tolerance << "), with " << f.n_slipping
+                        << " slipping and " << f.n_open
+                        << " open fault nodes. ";
+                if (f.unstable_softening)
+                  message << "Slip weakening is steeper than the tangential "
+                             "penalty at some nodes ((mu_0 - mu_d) / L_d "
+                             "|T_n| > p_t), which makes the tangent "
+                             "indefinite: raise <Fault/Tangential penalty> "
+                             "or L_d, or reduce the time step.";
+                else
+                  message << "Reduce <Time integration/Time step>, or raise "
+                             "<Solver/Maximum Newton iterations>.";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
+            last_signature = signature;
+          }
+
+        if (fault)
+          {
+            // Effective stiffness plus the contact tangent (nonsymmetric
+            // where nodes slip), for this iteration only.
+            scratch = 0;
+            assemble_contact(scratch, true, +1);
+            linear_solver.initialize(system_matrix,
+                                     null_space,
+                                     false,
+                                     fe_degree > 1);
+          }
+        increment = 0;
+        {
+          TimerOutput::Scope t(timer, "Linear solve");
+          last_linear_iterations +=
+            linear_solver.solve(system_matrix, increment, free_residual);
+        }
+        if (fault)
+          {
+            scratch = 0;
+            assemble_contact(scratch, true, -1);
+          }
+        increment_constraints.distribute(increment);
+        displacement += increment;
+        increment_norm         = increment.l2_norm();
+        last_newton_iterations = k + 1;
+      }
+    check_finite(displacement, "displacement");
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::implicit_step()
   {
     TimerOutput::Scope                         t(timer, "Implicit step");
@@ -304,11 +445,11 @@ namespace rupture
 
     const VectorType old_u(displacement), old_v(velocity), old_a(acceleration);
     VectorType load(displacement), residual(displacement), tmp(displacement),
-      increment(displacement), cv(displacement);
+      cv(displacement);
     assemble_load_vector(time, load);
 
     // New velocity and acceleration as functions of the new displacement
-    // (Newmark, eq. 12), and the residual f - M a - C v - K u.
+    // (Newmark, eq. 12), and the residual f - M a - C v - K u - F_contact.
     const auto update_rates = [&]() {
       acceleration = displacement;
       acceleration -= old_u;
@@ -328,33 +469,16 @@ namespace rupture
       residual -= tmp;
       compute_damping_force(velocity, cv);
       residual -= cv;
+      if (fault)
+        {
+          tmp = 0;
+          assemble_contact(tmp, false, 1);
+          residual -= tmp;
+        }
     };
 
-    displacement = old_u;
-    add_kinematic_increment(displacement);
-    update_rates();
-    compute_residual();
-
-    // The problem is linear without a fault: one solve of the effective
-    // stiffness system (eq. 14) is exact up to the solver tolerance. The
-    // fault's Newton iteration (Fig. 6) will wrap this solve.
-    increment_constraints.set_zero(residual);
-    increment = 0;
-    {
-      TimerOutput::Scope t(timer, "Linear solve");
-      last_linear_iterations =
-        linear_solver.solve(system_matrix, increment, residual);
-    }
-    increment_constraints.distribute(increment);
-    displacement += increment;
-    update_rates();
-    compute_residual();
-    check_finite(displacement, "displacement");
-
-    {
-      TimerOutput::Scope t(timer, "Energy budget");
-      update_energy(old_u, load, residual, cv);
-    }
+    solve_step(old_u, update_rates, compute_residual, residual);
+    finish_step(old_u, load, residual, cv);
   }
 
 
@@ -425,31 +549,54 @@ namespace rupture
     TimerOutput::Scope t(timer, "Quasi-static step");
     const VectorType   old_u(displacement);
     VectorType load(displacement), residual(displacement), tmp(displacement),
-      increment(displacement), zero(displacement);
+      zero(displacement);
     assemble_load_vector(time, load);
 
-    add_kinematic_increment(displacement);
-    residual = load;
-    stiffness_matrix.vmult(tmp, displacement);
-    residual -= tmp;
-    increment_constraints.set_zero(residual);
-    increment = 0;
-    last_linear_iterations =
-      linear_solver.solve(system_matrix, increment, residual);
-    increment_constraints.distribute(increment);
-    displacement += increment;
-    check_finite(displacement, "displacement");
+    const auto compute_residual = [&]() {
+      residual = load;
+      stiffness_matrix.vmult(tmp, displacement);
+      residual -= tmp;
+      if (fault)
+        {
+          tmp = 0;
+          assemble_contact(tmp, false, 1);
+          residual -= tmp;
+        }
+    };
+    solve_step(
+      old_u, []() {}, compute_residual, residual);
 
     // The rate of the loading, for output; no inertia.
     velocity = displacement;
     velocity -= old_u;
     velocity /= time_step;
-
-    residual = load;
-    stiffness_matrix.vmult(tmp, displacement);
-    residual -= tmp;
     zero = 0;
-    update_energy(old_u, load, residual, zero);
+    finish_step(old_u, load, residual, zero);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_step(const VectorType &old_u,
+                              const VectorType &load,
+                              const VectorType &residual,
+                              const VectorType &new_damping_force)
+  {
+    if (fault)
+      {
+        // The contact forces of the converged state, for the work done on
+        // the fault, and the accepted fault state.
+        VectorType force(displacement);
+        force = 0;
+        assemble_contact(force, false, 1);
+        VectorType increment(displacement);
+        increment -= old_u;
+        fault_work += 0.5 * ((force * increment) + (contact_force * increment));
+        contact_force = force;
+        fault->commit(time_step);
+      }
+    update_energy(old_u, load, residual, new_damping_force);
   }
 
 

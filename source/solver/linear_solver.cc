@@ -17,9 +17,11 @@ namespace rupture
       {
         prm.declare_entry("Linear solver",
                           "automatic",
-                          Patterns::Selection("automatic|CG|GMRES"),
+                          Patterns::Selection("automatic|CG|GMRES|direct"),
                           "Krylov method: 'automatic' uses CG for symmetric "
-                          "positive definite systems and GMRES otherwise.");
+                          "positive definite systems and GMRES otherwise. "
+                          "'direct' factorises the matrix (Trilinos Amesos "
+                          "KLU): robust, but only for small problems.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
                           Patterns::Double(0, 1),
@@ -94,8 +96,15 @@ namespace rupture
                         TrilinosWrappers::MPI::Vector        &x,
                         const TrilinosWrappers::MPI::Vector  &b) const
     {
-      Assert(amg, ExcMessage("LinearSolver::initialize() was not called."));
       const double b_norm = b.l2_norm();
+      if (solver_type == "direct")
+        {
+          SolverControl                  control(1, 0);
+          TrilinosWrappers::SolverDirect direct(control);
+          direct.solve(matrix, x, b);
+          return 1;
+        }
+      Assert(amg, ExcMessage("LinearSolver::initialize() was not called."));
       AssertThrow(std::isfinite(b_norm),
                   ExcMessage("The right-hand side of the linear system is "
                              "not finite: the run has become unstable."));

@@ -1,6 +1,7 @@
 #ifndef rupture_simulator_simulator_h
 #define rupture_simulator_simulator_h
 
+#include <rupture/fault/fault.h>
 #include <rupture/material/elastic_material.h>
 #include <rupture/output/log.h>
 #include <rupture/output/statistics.h>
@@ -22,6 +23,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -99,6 +101,35 @@ namespace rupture
     explicit_step();
     void
     quasi_static_step();
+    /**
+     * Solve for the displacement at the new time: one linear solve without
+     * a fault, Newton's method (the paper's Fig. 6) with one. @p update_rates
+     * sets velocity and acceleration from the displacement, and
+     * @p compute_residual the residual f - M a - C v - K u - F_contact
+     * (unconstrained) and the damping force.
+     */
+    void
+    solve_step(const VectorType            &old_displacement,
+               const std::function<void()> &update_rates,
+               const std::function<void()> &compute_residual,
+               VectorType                  &residual);
+    /**
+     * Add the contact forces at the current displacement to @p force (and
+     * @p sign times the contact tangent to the system matrix if asked).
+     */
+    void
+    assemble_contact(VectorType  &force,
+                     const bool   with_tangent,
+                     const double sign);
+    /**
+     * After the solve of a step: accept the fault state and update the
+     * energy budget.
+     */
+    void
+    finish_step(const VectorType &old_displacement,
+                const VectorType &load,
+                const VectorType &residual,
+                const VectorType &new_damping_force);
     void
     apply_mass(const VectorType &x, VectorType &y) const;
     void
@@ -146,6 +177,7 @@ namespace rupture
 
     // Components.
     std::unique_ptr<Scene::Interface<dim>> scene;
+    std::unique_ptr<Fault::Fault<dim>>     fault;
     Material::ElasticMaterials             materials;
     Scene::BoundaryConditions<dim>         boundary_conditions;
     Solver::LinearSolver                   linear_solver;
@@ -165,14 +197,15 @@ namespace rupture
     std::vector<std::pair<types::global_dof_index, double>> kinematic_dofs;
 
     // Operators. Only what the scheme needs is built.
-    TrilinosWrappers::SparseMatrix stiffness_matrix;
-    TrilinosWrappers::SparseMatrix mass_matrix;
-    TrilinosWrappers::SparseMatrix system_matrix;
-    VectorType                     lumped_mass;
-    VectorType                     absorbing_damping;
-    VectorType                     explicit_inverse_diagonal;
-    VectorType                     constant_load;
-    bool                           has_absorbing;
+    TrilinosWrappers::SparseMatrix   stiffness_matrix;
+    TrilinosWrappers::SparseMatrix   mass_matrix;
+    TrilinosWrappers::SparseMatrix   system_matrix;
+    std::vector<std::vector<double>> null_space;
+    VectorType                       lumped_mass;
+    VectorType                       absorbing_damping;
+    VectorType                       explicit_inverse_diagonal;
+    VectorType                       constant_load;
+    bool                             has_absorbing;
 
     // State.
     double       time;
@@ -187,15 +220,23 @@ namespace rupture
     /// budget.
     VectorType applied_force;
     VectorType damping_force;
+    /// Contact forces of the fault at the current state.
+    VectorType contact_force;
 
     // Energy budget (J) and per-step counters. The balance is
     // kinetic + strain + dissipated - work - initial energy.
-    double       initial_energy;
-    double       kinetic_energy;
-    double       strain_energy;
-    double       external_work;
-    double       damping_dissipation;
+    double initial_energy;
+    double kinetic_energy;
+    double strain_energy;
+    double external_work;
+    double damping_dissipation;
+    /// Work done on the fault: penalty spring energy plus friction (J).
+    double       fault_work;
     unsigned int last_linear_iterations;
+    unsigned int last_newton_iterations;
+    double       newton_force_tolerance;
+    double       newton_displacement_tolerance;
+    unsigned int max_newton_iterations;
     double       wall_time_start;
     double       next_output_time;
 

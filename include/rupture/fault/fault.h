@@ -1,0 +1,186 @@
+#ifndef rupture_fault_fault_h
+#define rupture_fault_fault_h
+
+#include <rupture/fault/contact.h>
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    /**
+     * Summary of the fault after a step, over all ranks.
+     */
+    struct Statistics
+    {
+      unsigned int n_nodes            = 0;
+      unsigned int n_slipping         = 0;
+      unsigned int n_open             = 0;
+      double       max_slip           = 0;
+      double       max_slip_rate      = 0;
+      double       slipping_area      = 0;
+      double       seismic_moment     = 0;
+      double       frictional_energy  = 0;
+      bool         unstable_softening = false;
+    };
+
+    /**
+     * A fault as a frictional contact interface that splits the
+     * displacement field (see doc/design.md).
+     *
+     * The cells of the mesh are divided into a minus side (active FE index
+     * 0) and a plus side (index 1), by a plane or by material ids. The faces
+     * between the two sides form the interface. Where the interface lies in
+     * the fault region, its nodes carry separate displacements on either
+     * side (split node pairs) coupled by penalty contact with friction;
+     * elsewhere the plus node is tied to the minus node (welded).
+     *
+     * Contact is evaluated at the nodes with their tributary area (the
+     * paper's node-to-surface master-slave element on a matching mesh):
+     * a vertex quadrature of the fault faces.
+     */
+    template <int dim>
+    class Fault
+    {
+    public:
+      using VectorType = TrilinosWrappers::MPI::Vector;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /**
+       * Read the "Fault" section. Returns nullptr if Model = none.
+       */
+      static std::unique_ptr<Fault<dim>>
+      create(ParameterHandler &prm);
+
+      /**
+       * The side (0 = minus, 1 = plus) of a cell.
+       */
+      unsigned int
+      side(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
+      /**
+       * After the DoFs are distributed: find the split node pairs and the
+       * welded ones, add the welding constraints u+ = u- to
+       * @p constraints (not yet closed), and compute the nodes' areas and
+       * normals.
+       */
+      void
+      setup(const DoFHandler<dim>     &dof_handler,
+            const IndexSet            &locally_owned_dofs,
+            const IndexSet            &locally_relevant_dofs,
+            AffineConstraints<double> &constraints,
+            const std::vector<double> &shear_modulus_of_material,
+            const MPI_Comm             communicator);
+
+      /**
+       * Add the coupling between the two nodes of each pair.
+       */
+      void
+      add_sparsity(DynamicSparsityPattern &dsp) const;
+
+      /**
+       * Return-map every pair for the displacement @p u (with ghost
+       * entries), add the contact forces to @p force, and, if @p tangent is
+       * given, add @p sign times the contact tangent to it. The states stay
+       * trial states until commit().
+       */
+      void
+      assemble(const VectorType                &u,
+               const double                     dt,
+               const AffineConstraints<double> &force_constraints,
+               VectorType                      &force,
+               const AffineConstraints<double> &tangent_constraints,
+               TrilinosWrappers::SparseMatrix  *tangent,
+               const double                     sign = 1);
+
+      /**
+       * Accept the trial states of the last assemble() as the new state.
+       */
+      void
+      commit(const double dt);
+
+      /**
+       * A number that changes when a pair changes between stick, slip and
+       * open in the last assemble(), summed over ranks.
+       */
+      unsigned long
+      status_signature() const;
+
+      /**
+       * True if no pair slipped in the last assemble().
+       */
+      bool
+      all_stuck() const;
+
+      Statistics
+      statistics() const;
+
+      unsigned int
+      n_split_nodes() const;
+
+      unsigned int
+      n_welded_nodes() const;
+
+    private:
+      struct NodePair
+      {
+        std::array<types::global_dof_index, dim> minus;
+        std::array<types::global_dof_index, dim> plus;
+        Point<dim>                               location;
+        double                                   area = 0;
+        Tensor<1, dim>                           normal;
+        Tensor<1, dim>                           initial_traction;
+        double                                   normal_penalty     = 0;
+        double                                   tangential_penalty = 0;
+        double                                   shear_modulus      = 0;
+        // Committed state.
+        Friction::State state;
+        Tensor<1, dim>  plastic_slip;
+        Tensor<1, dim>  slip;
+        // Trial state of the last assemble().
+        ContactResponse<dim> trial;
+        Tensor<1, dim>       trial_slip;
+      };
+
+      Point<3>
+      to_3d(const Point<dim> &p) const;
+
+      MPI_Comm communicator;
+
+      // Parameters.
+      bool                                 side_by_plane = true;
+      Point<dim>                           plane_point;
+      Tensor<1, dim>                       plane_normal;
+      std::vector<types::material_id>      plus_materials;
+      std::unique_ptr<FunctionParser<dim>> region;
+      std::unique_ptr<FunctionParser<dim>> normal_penalty;
+      std::unique_ptr<FunctionParser<dim>> tangential_penalty;
+      std::unique_ptr<FunctionParser<dim>> initial_traction;
+      std::unique_ptr<Friction::Interface> friction_law;
+
+      // Locally owned pairs (owned by the owner of the minus DoF of
+      // component 0).
+      std::vector<NodePair> pairs;
+      unsigned int          n_global_split    = 0;
+      unsigned int          n_global_welded   = 0;
+      double                frictional_energy = 0;
+    };
+  } // namespace Fault
+} // namespace rupture
+
+#endif

@@ -1,0 +1,565 @@
+#include <rupture/base/utilities.h>
+#include <rupture/fault/fault.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    template <int dim>
+    void
+    Fault<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fault");
+      {
+        prm.declare_entry("Model",
+                          "none",
+                          Patterns::Selection("none|penalty contact"),
+                          "'none' for a body without a fault. 'penalty "
+                          "contact': the fault of the GeoFEM paper, a split "
+                          "interface whose node pairs are coupled by normal "
+                          "and tangential penalties with Coulomb friction.");
+        prm.declare_entry("Plus side",
+                          "plane",
+                          Patterns::Selection("plane|material ids"),
+                          "How the cells on either side of the fault are "
+                          "told apart: by the plane through <Plane point> "
+                          "with normal <Plane normal> (cells on the side the "
+                          "normal points to are the plus side), or by the "
+                          "material ids listed in <Plus side material ids>. "
+                          "The faces between the sides form the interface; "
+                          "they must be faces of the mesh.");
+        prm.declare_entry("Plane point",
+                          "0",
+                          Patterns::Anything(),
+                          "A point of the fault plane (m): one number per "
+                          "dimension, or one for all.");
+        prm.declare_entry("Plane normal",
+                          "0, 1, 0",
+                          Patterns::Anything(),
+                          "A normal vector of the fault plane, pointing to "
+                          "the plus side; one number per dimension.");
+        prm.declare_entry("Plus side material ids",
+                          "",
+                          Patterns::Anything(),
+                          "Material ids of the plus side, when <Plus side> "
+                          "= material ids (e.g. '2' for the plate of the "
+                          "Northeast-Japan scene).");
+        prm.declare_entry(
+          "Fault region",
+          "1",
+          Patterns::Anything(),
+          "Where the interface is a fault: a function of x, y (, z) that is "
+          "nonzero on the fault and zero where the two sides stay welded, "
+          "e.g. '(abs(x) <= 15000 && z >= -15000) ? 1 : 0'. Nodes on the "
+          "border of the region are welded.");
+        prm.declare_entry("Normal penalty",
+                          "5e11",
+                          Patterns::Anything(),
+                          "p_n (Pa/m): stiffness resisting interpenetration, "
+                          "a function of x, y (, z). > 0. The paper uses "
+                          "5e11.");
+        prm.declare_entry("Tangential penalty",
+                          "5e11",
+                          Patterns::Anything(),
+                          "p_t (Pa/m): stiffness of the stuck fault in "
+                          "shear, a function of x, y (, z). > 0.");
+        prm.declare_entry(
+          "Initial traction",
+          "",
+          Patterns::Anything(),
+          "Traction (Pa) of an initial stress that the displacement does "
+          "not carry, exerted on the minus side (T = sigma n, n from minus "
+          "to plus; compression has T.n < 0), as a vector function of x, y "
+          "(, z), components separated by ';'. Empty for zero, as when the "
+          "stress comes from a loading step. Used by the benchmarks, e.g. "
+          "TPV3: '70e6; -120e6; 0' for a plane with normal (0, 1, 0).");
+        Friction::declare_parameters(prm);
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    std::unique_ptr<Fault<dim>>
+    Fault<dim>::create(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fault");
+      if (prm.get("Model") == "none")
+        {
+          prm.leave_subsection();
+          return nullptr;
+        }
+      auto              fault     = std::make_unique<Fault<dim>>();
+      const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
+      fault->side_by_plane        = (prm.get("Plus side") == "plane");
+      fault->plane_point          = Point<dim>(Utilities::parse_vector<dim>(
+        prm.get("Plane point"), "Fault/Plane point", true));
+      fault->plane_normal =
+        Utilities::parse_vector<dim>(prm.get("Plane normal"),
+                                     "Fault/Plane normal");
+      AssertThrow(fault->plane_normal.norm() > 0,
+                  ExcMessage("<Fault/Plane normal> must not be the zero "
+                             "vector."));
+      fault->plane_normal /= fault->plane_normal.norm();
+      for (const double id :
+           Utilities::parse_doubles(prm.get("Plus side material ids"),
+                                    "Fault/Plus side material ids"))
+        {
+          AssertThrow(id >= 0 && id < 255 && id == std::floor(id),
+                      ExcMessage("<Fault/Plus side material ids> must be "
+                                 "integers in 0..254."));
+          fault->plus_materials.push_back(static_cast<types::material_id>(id));
+        }
+      AssertThrow(fault->side_by_plane || !fault->plus_materials.empty(),
+                  ExcMessage("<Fault/Plus side> = material ids, but <Fault/"
+                             "Plus side material ids> is empty."));
+      fault->region = Utilities::parse_function<dim>(prm.get("Fault region"),
+                                                     1,
+                                                     "Fault/Fault region",
+                                                     variables);
+      fault->normal_penalty = Utilities::parse_function<dim>(
+        prm.get("Normal penalty"), 1, "Fault/Normal penalty", variables);
+      fault->tangential_penalty =
+        Utilities::parse_function<dim>(prm.get("Tangential penalty"),
+                                       1,
+                                       "Fault/Tangential penalty",
+                                       variables);
+      fault->initial_traction = Utilities::parse_function<dim>(
+        prm.get("Initial traction"), dim, "Fault/Initial traction", variables);
+      fault->friction_law = Friction::create(prm);
+      prm.leave_subsection();
+      return fault;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::side(
+      const typename DoFHandler<dim>::active_cell_iterator &cell) const
+    {
+      if (side_by_plane)
+        return ((cell->center() - plane_point) * plane_normal > 0) ? 1 : 0;
+      return std::find(plus_materials.begin(),
+                       plus_materials.end(),
+                       cell->material_id()) != plus_materials.end() ?
+               1 :
+               0;
+    }
+
+
+
+    template <int dim>
+    Point<3>
+    Fault<dim>::to_3d(const Point<dim> &p) const
+    {
+      Point<3> x;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] = p[d];
+      return x;
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::setup(const DoFHandler<dim> &dof_handler,
+                      const IndexSet        &locally_owned_dofs,
+                      const IndexSet &,
+                      AffineConstraints<double> &constraints,
+                      const std::vector<double> &shear_modulus,
+                      const MPI_Comm             comm)
+    {
+      communicator = comm;
+      AssertThrow(dof_handler.get_fe_collection().size() == 2,
+                  ExcInternalError());
+      const FiniteElement<dim> &fe0 = dof_handler.get_fe(0);
+      const FiniteElement<dim> &fe1 = dof_handler.get_fe(1);
+
+      std::map<types::global_dof_index, NodePair> fault_nodes;
+      std::map<types::global_dof_index, NodePair> welded_nodes;
+      std::set<
+        std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
+        fault_faces;
+
+      std::vector<types::global_dof_index> dm(fe0.n_dofs_per_face()),
+        dp(fe1.n_dofs_per_face());
+      const unsigned int n_nodes           = fe0.n_dofs_per_face() / dim;
+      unsigned int       n_interface_faces = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial() && cell->active_fe_index() == 0)
+          for (const auto f : cell->face_indices())
+            {
+              if (cell->at_boundary(f))
+                continue;
+              AssertThrow(!cell->neighbor(f)->has_children() &&
+                            cell->neighbor(f)->level() == cell->level(),
+                          ExcMessage("The fault interface must be refined "
+                                     "alike on both sides (no hanging nodes "
+                                     "on it)."));
+              const auto neighbor = cell->neighbor(f);
+              if (neighbor->is_artificial() || neighbor->active_fe_index() != 1)
+                continue;
+              const auto       face   = cell->face(f);
+              const Point<dim> center = face->center();
+              if (cell->is_locally_owned())
+                ++n_interface_faces;
+              if (side_by_plane)
+                {
+                  const double distance = (center - plane_point) * plane_normal;
+                  std::ostringstream where;
+                  where << center;
+                  AssertThrow(std::abs(distance) <= 1e-6 * cell->diameter(),
+                              ExcMessage(
+                                "The fault plane of <Fault/Plane point> and "
+                                "<Fault/Plane normal> does not coincide with "
+                                "faces of the mesh: the interface face at (" +
+                                where.str() + ") is " +
+                                std::to_string(distance) +
+                                " m off the plane. Choose a plane through "
+                                "mesh faces, or a mesh that has faces on "
+                                "the plane."));
+                }
+              const bool is_fault = (region->value(center) != 0);
+              if (is_fault && cell->is_locally_owned())
+                fault_faces.insert({cell, f});
+
+              face->get_dof_indices(dm, 0);
+              face->get_dof_indices(dp, 1);
+              std::vector<std::array<types::global_dof_index, dim>> minus(
+                n_nodes),
+                plus(n_nodes);
+              for (unsigned int i = 0; i < dm.size(); ++i)
+                {
+                  const auto ci = fe0.face_system_to_component_index(i, f);
+                  minus[ci.second][ci.first] = dm[i];
+                  const auto cp = fe1.face_system_to_component_index(i, f);
+                  plus[cp.second][cp.first - dim] = dp[i];
+                }
+              for (unsigned int k = 0; k < n_nodes; ++k)
+                {
+                  NodePair pair;
+                  pair.minus         = minus[k];
+                  pair.plus          = plus[k];
+                  pair.shear_modulus = shear_modulus[cell->material_id()];
+                  (is_fault ? fault_nodes : welded_nodes)
+                    .emplace(pair.minus[0], pair);
+                }
+            }
+
+      // Nodes on the border of the fault region are welded.
+      for (const auto &w : welded_nodes)
+        fault_nodes.erase(w.first);
+
+      for (const auto &[key, pair] : welded_nodes)
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!constraints.is_constrained(pair.plus[c]))
+            {
+              constraints.add_line(pair.plus[c]);
+              constraints.add_entry(pair.plus[c], pair.minus[c], 1.);
+            }
+
+      // Tributary area and normal of each node: the integral of its shape
+      // function times the normal over the fault faces, with the vertex
+      // (Gauss-Lobatto) quadrature that lumps it to the nodes.
+      VectorType area_normal(locally_owned_dofs, communicator);
+      {
+        const unsigned int       degree = fe0.degree;
+        hp::QCollection<dim - 1> q(QGaussLobatto<dim - 1>(degree + 1));
+        hp::FEFaceValues<dim>    hp_face(dof_handler.get_fe_collection(),
+                                      q,
+                                      update_values | update_normal_vectors |
+                                        update_JxW_values);
+        std::vector<types::global_dof_index> dofs(fe0.n_dofs_per_cell());
+        Vector<double>                       local(fe0.n_dofs_per_cell());
+        for (const auto &[cell, f] : fault_faces)
+          {
+            hp_face.reinit(cell, f);
+            const FEFaceValues<dim> &fv = hp_face.get_present_fe_values();
+            cell->get_dof_indices(dofs);
+            local = 0;
+            for (const unsigned int q : fv.quadrature_point_indices())
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                {
+                  const unsigned int c = fe0.system_to_component_index(i).first;
+                  local(i) +=
+                    fv.shape_value(i, q) * fv.normal_vector(q)[c] * fv.JxW(q);
+                }
+            area_normal.add(dofs, local);
+          }
+        area_normal.compress(VectorOperation::add);
+      }
+
+      std::map<types::global_dof_index, Point<dim>> support_points;
+      DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
+                                             MappingQ1<dim>()),
+                                           dof_handler,
+                                           support_points);
+
+      pairs.clear();
+      for (auto &[key, pair] : fault_nodes)
+        if (locally_owned_dofs.is_element(pair.minus[0]))
+          {
+            for (unsigned int c = 0; c < dim; ++c)
+              pair.normal[c] = area_normal(pair.minus[c]);
+            pair.area = pair.normal.norm();
+            AssertThrow(pair.area > 0, ExcInternalError());
+            pair.normal /= pair.area;
+            pair.location    = support_points[pair.minus[0]];
+            const Point<3> x = to_3d(pair.location);
+            for (unsigned int c = 0; c < dim; ++c)
+              pair.initial_traction[c] =
+                initial_traction->value(pair.location, c);
+            pair.normal_penalty     = normal_penalty->value(pair.location);
+            pair.tangential_penalty = tangential_penalty->value(pair.location);
+            std::ostringstream where;
+            where << pair.location;
+            AssertThrow(pair.normal_penalty > 0 && pair.tangential_penalty > 0,
+                        ExcMessage("<Fault/Normal penalty> and <Fault/"
+                                   "Tangential penalty> must be > 0 (Pa/m), "
+                                   "but are " +
+                                   std::to_string(pair.normal_penalty) +
+                                   " and " +
+                                   std::to_string(pair.tangential_penalty) +
+                                   " at (" + where.str() + ")."));
+            friction_law->initialize_state(x, pair.state);
+            pairs.push_back(pair);
+          }
+
+      unsigned int n_welded_owned = 0;
+      for (const auto &[key, pair] : welded_nodes)
+        if (locally_owned_dofs.is_element(pair.minus[0]))
+          ++n_welded_owned;
+      n_global_split =
+        dealii::Utilities::MPI::sum(static_cast<unsigned int>(pairs.size()),
+                                    communicator);
+      n_global_welded =
+        dealii::Utilities::MPI::sum(n_welded_owned, communicator);
+      const unsigned int n_faces =
+        dealii::Utilities::MPI::sum(n_interface_faces, communicator);
+      AssertThrow(n_faces > 0,
+                  ExcMessage("The fault interface is empty: no cell of the "
+                             "plus side touches a cell of the minus side. "
+                             "Check <Fault/Plus side> and its plane or "
+                             "material ids."));
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::add_sparsity(DynamicSparsityPattern &dsp) const
+    {
+      for (const auto &pair : pairs)
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            {
+              dsp.add(pair.minus[a], pair.plus[b]);
+              dsp.add(pair.plus[a], pair.minus[b]);
+              dsp.add(pair.minus[a], pair.minus[b]);
+              dsp.add(pair.plus[a], pair.plus[b]);
+            }
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::assemble(const VectorType                &u,
+                         const double                     dt,
+                         const AffineConstraints<double> &force_constraints,
+                         VectorType                      &force,
+                         const AffineConstraints<double> &tangent_constraints,
+                         TrilinosWrappers::SparseMatrix  *tangent,
+                         const double                     sign)
+    {
+      std::vector<types::global_dof_index> dofs(2 * dim);
+      Vector<double>                       local_force(2 * dim);
+      FullMatrix<double>                   local_tangent(2 * dim, 2 * dim);
+      for (auto &pair : pairs)
+        {
+          Tensor<1, dim> delta;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              delta[c]      = u(pair.plus[c]) - u(pair.minus[c]);
+              dofs[c]       = pair.minus[c];
+              dofs[dim + c] = pair.plus[c];
+            }
+          pair.trial      = return_map<dim>(delta,
+                                       pair.normal,
+                                       pair.initial_traction,
+                                       pair.normal_penalty,
+                                       pair.tangential_penalty,
+                                       pair.plastic_slip,
+                                       pair.state,
+                                       *friction_law,
+                                       to_3d(pair.location),
+                                       dt);
+          pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
+
+          // Internal force of the contact: -A dT on the minus node, +A dT
+          // on the plus node, with dT the traction change carried by the
+          // displacement.
+          const Tensor<1, dim> dT = pair.trial.traction - pair.initial_traction;
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              local_force(c)       = -pair.area * dT[c];
+              local_force(dim + c) = pair.area * dT[c];
+            }
+          force_constraints.distribute_local_to_global(local_force,
+                                                       dofs,
+                                                       force);
+
+          if (tangent)
+            {
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    const double d =
+                      sign * pair.area * pair.trial.tangent[i][j];
+                    local_tangent(i, j)             = d;
+                    local_tangent(i, dim + j)       = -d;
+                    local_tangent(dim + i, j)       = -d;
+                    local_tangent(dim + i, dim + j) = d;
+                  }
+              tangent_constraints.distribute_local_to_global(local_tangent,
+                                                             dofs,
+                                                             *tangent);
+            }
+        }
+      force.compress(VectorOperation::add);
+      if (tangent)
+        tangent->compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::commit(const double dt)
+    {
+      for (auto &pair : pairs)
+        {
+          Friction::State updated;
+          friction_law->update_state(to_3d(pair.location),
+                                     pair.state,
+                                     pair.trial.slip_increment,
+                                     dt,
+                                     updated);
+          updated.slip_rate = (pair.trial_slip - pair.slip).norm() / dt;
+          const Tensor<1, dim> t =
+            pair.trial.traction -
+            (pair.trial.traction * pair.normal) * pair.normal;
+          frictional_energy += pair.area * t.norm() * pair.trial.slip_increment;
+          pair.state        = updated;
+          pair.plastic_slip = pair.trial.plastic_slip;
+          pair.slip         = pair.trial_slip;
+        }
+    }
+
+
+
+    template <int dim>
+    unsigned long
+    Fault<dim>::status_signature() const
+    {
+      unsigned long signature = 0;
+      for (const auto &pair : pairs)
+        signature += (static_cast<unsigned long>(pair.trial.status) + 1) *
+                     (pair.minus[0] % 1000003 + 1);
+      return dealii::Utilities::MPI::sum(signature, communicator);
+    }
+
+
+
+    template <int dim>
+    bool
+    Fault<dim>::all_stuck() const
+    {
+      unsigned int n = 0;
+      for (const auto &pair : pairs)
+        if (pair.trial.status != ContactStatus::stick)
+          ++n;
+      return dealii::Utilities::MPI::sum(n, communicator) == 0;
+    }
+
+
+
+    template <int dim>
+    Statistics
+    Fault<dim>::statistics() const
+    {
+      Statistics s;
+      double     area = 0, moment = 0;
+      unsigned   n_slip = 0, n_open = 0, unstable = 0;
+      double     max_slip = 0, max_rate = 0;
+      for (const auto &pair : pairs)
+        {
+          if (pair.trial.status == ContactStatus::slip)
+            {
+              ++n_slip;
+              area += pair.area;
+            }
+          if (pair.trial.status == ContactStatus::open)
+            ++n_open;
+          if (pair.trial.unstable_softening)
+            ++unstable;
+          max_slip = std::max(max_slip, pair.slip.norm());
+          max_rate = std::max(max_rate, pair.state.slip_rate);
+          moment += pair.shear_modulus * pair.area * pair.slip.norm();
+        }
+      s.n_nodes        = n_global_split;
+      s.n_slipping     = dealii::Utilities::MPI::sum(n_slip, communicator);
+      s.n_open         = dealii::Utilities::MPI::sum(n_open, communicator);
+      s.slipping_area  = dealii::Utilities::MPI::sum(area, communicator);
+      s.seismic_moment = dealii::Utilities::MPI::sum(moment, communicator);
+      s.max_slip       = dealii::Utilities::MPI::max(max_slip, communicator);
+      s.max_slip_rate  = dealii::Utilities::MPI::max(max_rate, communicator);
+      s.frictional_energy =
+        dealii::Utilities::MPI::sum(frictional_energy, communicator);
+      s.unstable_softening =
+        dealii::Utilities::MPI::sum(unstable, communicator) > 0;
+      return s;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::n_split_nodes() const
+    {
+      return n_global_split;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::n_welded_nodes() const
+    {
+      return n_global_welded;
+    }
+
+
+
+    template class Fault<2>;
+    template class Fault<3>;
+  } // namespace Fault
+} // namespace rupture
