@@ -52,7 +52,9 @@ namespace rupture
       const double cohesion   = law.cohesion(x);
 
       double mu = law.coefficient(x, old_state, 0., dt, derivative);
-      if (trial_norm <= mu * pressure + cohesion)
+      // A point exactly at its strength (as after a converged slip step)
+      // sticks: unloading must start from the stiff branch.
+      if (trial_norm <= (mu * pressure + cohesion) * (1 + 1e-10))
         {
           r.status       = ContactStatus::stick;
           r.traction     = normal_traction * n + trial;

@@ -507,7 +507,7 @@ namespace rupture
     Fault<dim>::statistics() const
     {
       Statistics s;
-      double     area = 0, moment = 0;
+      double     area = 0, moment = 0, normal = 0, shear = 0, total_area = 0;
       unsigned   n_slip = 0, n_open = 0, unstable = 0;
       double     max_slip = 0, max_rate = 0;
       for (const auto &pair : pairs)
@@ -524,6 +524,18 @@ namespace rupture
           max_slip = std::max(max_slip, pair.slip.norm());
           max_rate = std::max(max_rate, pair.state.slip_rate);
           moment += pair.shear_modulus * pair.area * pair.slip.norm();
+          const double tn = pair.trial.traction * pair.normal;
+          normal += pair.area * tn;
+          shear += pair.area * (pair.trial.traction - tn * pair.normal).norm();
+          total_area += pair.area;
+        }
+      total_area = dealii::Utilities::MPI::sum(total_area, communicator);
+      if (total_area > 0)
+        {
+          s.mean_normal_traction =
+            dealii::Utilities::MPI::sum(normal, communicator) / total_area;
+          s.mean_shear_traction =
+            dealii::Utilities::MPI::sum(shear, communicator) / total_area;
         }
       s.n_nodes        = n_global_split;
       s.n_slipping     = dealii::Utilities::MPI::sum(n_slip, communicator);

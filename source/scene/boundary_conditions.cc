@@ -33,9 +33,12 @@ namespace rupture
           "Prescribed velocity",
           "",
           Patterns::Anything(),
-          "Boundaries moved at a constant velocity in all components "
+          "Boundaries moved at a prescribed velocity in all components "
           "(m/s), as 'name: vx; vy[; vz]' pairs separated by commas, e.g. "
-          "'east: -2.508e-9; 0; 0' for plate motion.");
+          "'east: -2.508e-9; 0; 0' for plate motion. Each component may be "
+          "a function of x, y (, z) and t, e.g. 'top: (t < 10) ? 0.1 : "
+          "-0.1; 0' (use no commas inside an expression); the displacement "
+          "increment of a step is the velocity at mid-step times dt.");
         prm.declare_entry(
           "Traction",
           "",
@@ -172,10 +175,8 @@ namespace rupture
             k.name = name;
             k.id   = claim(name, "Prescribed velocity");
             k.components.fill(true);
-            std::string list = value;
-            std::replace(list.begin(), list.end(), ';', ',');
-            k.velocity = Utilities::parse_vector<dim>(
-              list, "Boundary conditions/Prescribed velocity");
+            k.velocity = Utilities::parse_function<dim>(
+              value, dim, "Boundary conditions/Prescribed velocity");
             kinematic.push_back(k);
           }
 

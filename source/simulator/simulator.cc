@@ -389,6 +389,11 @@ namespace rupture
     increment_constraints.clear();
     increment_constraints.reinit(locally_relevant_dofs);
     kinematic_dofs.clear();
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
+                                           MappingQ1<dim>()),
+                                         dof_handler,
+                                         support_points);
     std::vector<types::global_dof_index> face_dofs;
     for (const auto &bc : boundary_conditions.kinematic)
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -412,7 +417,8 @@ namespace rupture
                       continue;
                     increment_constraints.add_line(dof);
                     if (locally_owned_dofs.is_element(dof))
-                      kinematic_dofs.emplace_back(dof, bc.velocity[c]);
+                      kinematic_dofs.push_back(
+                        {dof, c, support_points[dof], bc.velocity.get()});
                   }
               }
     increment_constraints.merge(
@@ -589,7 +595,9 @@ namespace rupture
             "Seismic moment (N m, N in 2-D)",
             "Moment magnitude Mw (3-D only)",
             "Frictional dissipation (J)",
-            "Work done on the fault: penalty springs plus friction (J)"})
+            "Work done on the fault: penalty springs plus friction (J)",
+            "Mean normal traction on the fault (Pa, < 0 in compression)",
+            "Mean shear traction on the fault (Pa)"})
         columns.push_back(c);
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
@@ -734,7 +742,9 @@ namespace rupture
                                f.seismic_moment,
                                mw,
                                f.frictional_energy,
-                               fault_work})
+                               fault_work,
+                               f.mean_normal_traction,
+                               f.mean_shear_traction})
           row.push_back(v);
       }
     return row;

@@ -100,9 +100,23 @@ namespace rupture
   void
   Simulator<dim>::add_kinematic_increment(VectorType &u) const
   {
-    for (const auto &[dof, v] : kinematic_dofs)
-      u(dof) = u(dof) + v * time_step;
+    for (const auto &k : kinematic_dofs)
+      u(k.dof) =
+        u(k.dof) + kinematic_velocity(k, time - 0.5 * time_step) * time_step;
     u.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  double
+  Simulator<dim>::kinematic_velocity(const KinematicDof &k,
+                                     const double        t) const
+  {
+    if (!k.velocity)
+      return 0;
+    k.velocity->set_time(t);
+    return k.velocity->value(k.location, k.component);
   }
 
 
@@ -111,8 +125,8 @@ namespace rupture
   void
   Simulator<dim>::set_kinematic_velocity(VectorType &v) const
   {
-    for (const auto &[dof, value] : kinematic_dofs)
-      v(dof) = value;
+    for (const auto &k : kinematic_dofs)
+      v(k.dof) = kinematic_velocity(k, time);
     v.compress(VectorOperation::insert);
   }
 
@@ -500,8 +514,10 @@ namespace rupture
                      0.5 * time_step * time_step,
                      acceleration);
     velocity.add((1 - gamma) * time_step, acceleration);
-    for (const auto &[dof, v] : kinematic_dofs)
-      displacement(dof) = old_u(dof) + v * time_step;
+    for (const auto &k : kinematic_dofs)
+      displacement(k.dof) =
+        old_u(k.dof) +
+        kinematic_velocity(k, time - 0.5 * time_step) * time_step;
     displacement.compress(VectorOperation::insert);
     set_kinematic_velocity(velocity);
     hanging_constraints.distribute(displacement);

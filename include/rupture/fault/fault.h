@@ -35,6 +35,10 @@ namespace rupture
       double       seismic_moment     = 0;
       double       frictional_energy  = 0;
       bool         unstable_softening = false;
+      /// Area-weighted means of the normal traction (negative in
+      /// compression) and of the magnitude of the shear traction (Pa).
+      double mean_normal_traction = 0;
+      double mean_shear_traction  = 0;
     };
 
     /**

@@ -1,12 +1,14 @@
 #ifndef rupture_scene_boundary_conditions_h
 #define rupture_scene_boundary_conditions_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
 #include <array>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,9 +24,9 @@ namespace rupture
      * Kinematic conditions constrain the displacement increment of a step:
      * "fixed" and "roller" keep chosen components at their current value
      * (normally zero), "prescribed velocity" moves all components at a
-     * constant velocity (plate motion). Tractions and absorbing
-     * (Lysmer-Kuhlemeyer) dashpots are natural conditions; a boundary with
-     * none of these is traction free.
+     * velocity given as a function of position and time (plate motion).
+     * Tractions and absorbing (Lysmer-Kuhlemeyer) dashpots are natural
+     * conditions; a boundary with none of these is traction free.
      */
     template <int dim>
     class BoundaryConditions
@@ -36,8 +38,9 @@ namespace rupture
         types::boundary_id id;
         /// Which components are constrained.
         std::array<bool, dim> components;
-        /// Velocity of the constrained components (m/s).
-        Tensor<1, dim> velocity;
+        /// Velocity of the constrained components (m/s) as a function of
+        /// position and time; null for fixed and roller boundaries.
+        std::shared_ptr<FunctionParser<dim>> velocity;
       };
 
       static void

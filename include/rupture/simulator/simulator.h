@@ -194,7 +194,17 @@ namespace rupture
     /// Hanging nodes plus homogeneous kinematic conditions: for increments.
     AffineConstraints<double> increment_constraints;
     /// Locally owned kinematically constrained DoFs with their velocity.
-    std::vector<std::pair<types::global_dof_index, double>> kinematic_dofs;
+    struct KinematicDof
+    {
+      types::global_dof_index dof;
+      unsigned int            component;
+      Point<dim>              location;
+      FunctionParser<dim>    *velocity;
+    };
+    std::vector<KinematicDof> kinematic_dofs;
+    /// Velocity of a kinematically constrained DoF at time @p t.
+    double
+    kinematic_velocity(const KinematicDof &k, const double t) const;
 
     // Operators. Only what the scheme needs is built.
     TrilinosWrappers::SparseMatrix   stiffness_matrix;
