@@ -64,7 +64,8 @@ namespace tests
         double              v;
         while (s >> v)
           row.push_back(v);
-        rows.push_back(row);
+        if (!row.empty()) // skips lines of column names
+          rows.push_back(row);
       }
     return rows;
   }

@@ -12,6 +12,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -199,6 +202,7 @@ namespace rupture
         std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
         fault_faces;
 
+      owned_faces.clear();
       std::vector<types::global_dof_index> dm(fe0.n_dofs_per_face()),
         dp(fe1.n_dofs_per_face());
       const unsigned int n_nodes           = fe0.n_dofs_per_face() / dim;
@@ -252,6 +256,15 @@ namespace rupture
                   minus[ci.second][ci.first] = dm[i];
                   const auto cp = fe1.face_system_to_component_index(i, f);
                   plus[cp.second][cp.first - dim] = dp[i];
+                }
+              if (is_fault && cell->is_locally_owned())
+                {
+                  std::vector<types::global_dof_index> keys;
+                  for (unsigned int v = 0;
+                       v < GeometryInfo<dim>::vertices_per_face;
+                       ++v)
+                    keys.push_back(minus[v][0]);
+                  owned_faces.push_back(keys);
                 }
               for (unsigned int k = 0; k < n_nodes; ++k)
                 {
@@ -453,7 +466,7 @@ namespace rupture
 
     template <int dim>
     void
-    Fault<dim>::commit(const double dt)
+    Fault<dim>::commit(const double dt, const double time)
     {
       for (auto &pair : pairs)
         {
@@ -463,7 +476,17 @@ namespace rupture
                                      pair.trial.slip_increment,
                                      dt,
                                      updated);
-          updated.slip_rate = (pair.trial_slip - pair.slip).norm() / dt;
+          pair.slip_velocity = (pair.trial_slip - pair.slip) / dt;
+          updated.slip_rate  = pair.slip_velocity.norm();
+          // Rupture time: the first time the slip rate exceeds 1 mm/s,
+          // linearly interpolated within the step (SCEC convention).
+          if (pair.rupture_time < 0 && updated.slip_rate > 1e-3)
+            {
+              const double previous = pair.state.slip_rate;
+              const double w        = (1e-3 - previous) /
+                               std::max(updated.slip_rate - previous, 1e-300);
+              pair.rupture_time = time - dt + std::clamp(w, 0., 1.) * dt;
+            }
           const Tensor<1, dim> t =
             pair.trial.traction -
             (pair.trial.traction * pair.normal) * pair.normal;
@@ -472,6 +495,50 @@ namespace rupture
           pair.plastic_slip = pair.trial.plastic_slip;
           pair.slip         = pair.trial_slip;
         }
+    }
+
+
+
+    template <int dim>
+    std::vector<typename Fault<dim>::NodeRecord>
+    Fault<dim>::gather(const std::set<types::global_dof_index> *keys) const
+    {
+      std::vector<NodeRecord> mine;
+      for (const auto &pair : pairs)
+        if (!keys || keys->count(pair.minus[0]))
+          {
+            NodeRecord r;
+            r.key           = pair.minus[0];
+            r.location      = pair.location;
+            r.normal        = pair.normal;
+            r.slip          = pair.slip;
+            r.slip_velocity = pair.slip_velocity;
+            r.traction      = pair.trial.traction;
+            r.slip_path     = pair.state.slip_path;
+            r.friction      = pair.trial.friction;
+            r.rupture_time  = pair.rupture_time;
+            r.status        = static_cast<int>(pair.trial.status);
+            mine.push_back(r);
+          }
+      const auto all = dealii::Utilities::MPI::gather(communicator, mine, 0);
+      std::vector<NodeRecord> result;
+      for (const auto &part : all)
+        result.insert(result.end(), part.begin(), part.end());
+      return result;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::vector<types::global_dof_index>>
+    Fault<dim>::gather_faces() const
+    {
+      const auto all =
+        dealii::Utilities::MPI::gather(communicator, owned_faces, 0);
+      std::vector<std::vector<types::global_dof_index>> result;
+      for (const auto &part : all)
+        result.insert(result.end(), part.begin(), part.end());
+      return result;
     }
 
 

@@ -139,6 +139,7 @@ namespace rupture
 
     Scene::declare_parameters(prm);
     Fault::Fault<dim>::declare_parameters(prm);
+    Fault::FaultOutput<dim>::declare_parameters(prm);
     Material::ElasticMaterials::declare_parameters(prm);
     Scene::BoundaryConditions<dim>::declare_parameters(prm);
     TimeIntegration::Parameters::declare_parameters(prm);
@@ -287,8 +288,13 @@ namespace rupture
     materials.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
 
-    scene   = Scene::create<dim>(prm);
-    fault   = Fault::Fault<dim>::create(prm);
+    scene = Scene::create<dim>(prm);
+    fault = Fault::Fault<dim>::create(prm);
+    if (fault)
+      {
+        fault_output = std::make_unique<Fault::FaultOutput<dim>>();
+        fault_output->parse_parameters(prm);
+      }
     n_sides = fault ? 2 : 1;
     AssertThrow(!(fault &&
                   time_parameters.scheme ==
@@ -479,6 +485,8 @@ namespace rupture
       pcout << "   Fault: " << fault->n_split_nodes() << " split node pairs, "
             << fault->n_welded_nodes() << " welded interface nodes\n";
     null_space = rigid_body_modes();
+    if (fault)
+      fault_output->setup(*fault, communicator);
   }
 
 
@@ -601,6 +609,8 @@ namespace rupture
         columns.push_back(c);
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
+    if (fault)
+      fault_output->record(*fault, time);
     write_step_output(true);
 
     const unsigned int n_steps = static_cast<unsigned int>(
@@ -627,6 +637,8 @@ namespace rupture
           }
         check_finite(displacement, "displacement");
         statistics.add_row(statistics_row());
+        if (fault)
+          fault_output->record(*fault, time);
 
         if (step % screen_interval == 0 || step == n_steps)
           {
@@ -659,6 +671,11 @@ namespace rupture
         write_step_output(step == n_steps);
       }
 
+    if (fault)
+      fault_output->write_tables(*fault,
+                                 output_directory,
+                                 time_step,
+                                 test_mode);
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       statistics.write(output_directory + "/statistics");
 
@@ -766,6 +783,14 @@ namespace rupture
     u_ghost = displacement;
     v_ghost = velocity;
     volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
+    if (fault)
+      {
+        fault_output->write_surface(*fault, output_directory, time, step);
+        fault_output->write_tables(*fault,
+                                   output_directory,
+                                   time_step,
+                                   test_mode);
+      }
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       statistics.write(output_directory + "/statistics");
     next_output_time = time + output_interval;

@@ -610,7 +610,7 @@ namespace rupture
         increment -= old_u;
         fault_work += 0.5 * ((force * increment) + (contact_force * increment));
         contact_force = force;
-        fault->commit(time_step);
+        fault->commit(time_step, time);
       }
     update_energy(old_u, load, residual, new_damping_force);
   }

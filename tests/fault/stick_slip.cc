@@ -47,6 +47,25 @@ main(int argc, char **argv)
   std::printf("slip at the end within 1 mm of 400 mm: %s\n",
               std::abs(rows.back()[slip] - 0.4) < 1e-3 ? "yes" : "no");
 
+  // A station between fault nodes, in the SCEC format.
+  if (tests::run(
+        {prm, "--set", "Fault/Output/Stations=faultst0125: 125, 500"}) != 0)
+    std::printf("run with a station failed\n");
+  const auto station =
+    tests::read_statistics("output-stick-slip/faultst0125.dat");
+  std::printf("station file: %zu rows of %zu columns, final h-slip %.4f m, "
+              "h-shear-stress %.4f MPa\n",
+              station.size(),
+              station.empty() ? 0 : station.back().size(),
+              station.empty() ? 0. : station.back()[1],
+              station.empty() ? 0. : station.back()[3]);
+  std::string errors;
+  std::printf("station off the fault: exit code %d\n",
+              tests::run_capture(
+                {prm, "--set", "Fault/Output/Stations=offfault: 100, 400"},
+                errors));
+  std::printf("  %s", errors.substr(errors.find("Error")).c_str());
+
   if (tests::run({prm, "--set", "Fault/Fault region=0"}) != 0)
     std::printf("welded run failed\n");
   const auto welded   = tests::read_statistics("output-stick-slip/statistics");

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace rupture
@@ -61,6 +62,35 @@ namespace rupture
     {
     public:
       using VectorType = TrilinosWrappers::MPI::Vector;
+
+      /**
+       * The values of one fault node, for output. The key identifies the
+       * node (its minus-side DoF of component 0).
+       */
+      struct NodeRecord
+      {
+        types::global_dof_index key = 0;
+        Point<dim>              location;
+        Tensor<1, dim>          normal;
+        /// Relative displacement u+ - u-, tangential part (m).
+        Tensor<1, dim> slip;
+        /// Its rate over the last step (m/s).
+        Tensor<1, dim> slip_velocity;
+        /// Traction on the minus side (Pa).
+        Tensor<1, dim> traction;
+        double         slip_path    = 0;
+        double         friction     = 0;
+        double         rupture_time = -1;
+        int            status       = 0;
+
+        template <class Archive>
+        void
+        serialize(Archive &ar, const unsigned int)
+        {
+          ar &key &location &normal &slip &slip_velocity &traction &slip_path
+            &friction &rupture_time &status;
+        }
+      };
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -116,7 +146,28 @@ namespace rupture
        * Accept the trial states of the last assemble() as the new state.
        */
       void
-      commit(const double dt);
+      commit(const double dt, const double time);
+
+      /**
+       * The records of the locally owned nodes (all, or those whose keys
+       * are in @p keys), gathered on rank 0 (empty elsewhere).
+       */
+      std::vector<NodeRecord>
+      gather(const std::set<types::global_dof_index> *keys = nullptr) const;
+
+      /**
+       * The fault faces as lists of node keys of their vertices (deal.II's
+       * lexicographic order), gathered on rank 0.
+       */
+      std::vector<std::vector<types::global_dof_index>>
+      gather_faces() const;
+
+      /// A point of the fault plane (for output coordinates).
+      const Point<dim> &
+      reference_point() const
+      {
+        return plane_point;
+      }
 
       /**
        * A number that changes when a pair changes between stick, slip and
@@ -156,6 +207,8 @@ namespace rupture
         Friction::State state;
         Tensor<1, dim>  plastic_slip;
         Tensor<1, dim>  slip;
+        Tensor<1, dim>  slip_velocity;
+        double          rupture_time = -1;
         // Trial state of the last assemble().
         ContactResponse<dim> trial;
         Tensor<1, dim>       trial_slip;
@@ -180,9 +233,11 @@ namespace rupture
       // Locally owned pairs (owned by the owner of the minus DoF of
       // component 0).
       std::vector<NodePair> pairs;
-      unsigned int          n_global_split    = 0;
-      unsigned int          n_global_welded   = 0;
-      double                frictional_energy = 0;
+      /// Fault faces of locally owned cells, as vertex keys.
+      std::vector<std::vector<types::global_dof_index>> owned_faces;
+      unsigned int                                      n_global_split    = 0;
+      unsigned int                                      n_global_welded   = 0;
+      double                                            frictional_energy = 0;
     };
   } // namespace Fault
 } // namespace rupture

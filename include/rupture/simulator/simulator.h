@@ -2,6 +2,7 @@
 #define rupture_simulator_simulator_h
 
 #include <rupture/fault/fault.h>
+#include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
 #include <rupture/output/log.h>
 #include <rupture/output/statistics.h>
@@ -176,11 +177,12 @@ namespace rupture
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
 
     // Components.
-    std::unique_ptr<Scene::Interface<dim>> scene;
-    std::unique_ptr<Fault::Fault<dim>>     fault;
-    Material::ElasticMaterials             materials;
-    Scene::BoundaryConditions<dim>         boundary_conditions;
-    Solver::LinearSolver                   linear_solver;
+    std::unique_ptr<Scene::Interface<dim>>   scene;
+    std::unique_ptr<Fault::Fault<dim>>       fault;
+    std::unique_ptr<Fault::FaultOutput<dim>> fault_output;
+    Material::ElasticMaterials               materials;
+    Scene::BoundaryConditions<dim>           boundary_conditions;
+    Solver::LinearSolver                     linear_solver;
 
     // Discretisation.
     parallel::distributed::Triangulation<dim> triangulation;

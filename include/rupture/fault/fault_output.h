@@ -1,0 +1,102 @@
+#ifndef rupture_fault_fault_output_h
+#define rupture_fault_fault_output_h
+
+#include <rupture/fault/fault.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    /**
+     * What the fault writes for the user, all from rank 0:
+     * - <output>/fault.pvd with fault/fault_NNNNN.vtu: the fault surface
+     *   with slip, slip rate, slip path, friction coefficient, normal and
+     *   shear traction, state (0 stick, 1 slip, 2 open) and rupture time;
+     * - station time series <output>/<name>.dat at named fault points in the
+     *   SCEC format (values interpolated from the fault nodes);
+     * - <output>/rupture_time.dat, the rupture-time contour file.
+     *
+     * Along-strike (h) and down-dip (v) components use the fault's strike
+     * and dip directions; slip is the plus side's displacement minus the
+     * minus side's.
+     */
+    template <int dim>
+    class FaultOutput
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /**
+       * Read "Fault/Output". Throws a clear error for a malformed station.
+       */
+      void
+      parse_parameters(ParameterHandler &prm);
+
+      /**
+       * Locate the stations on the fault (an error names a station that is
+       * not on it) and set the strike and dip directions.
+       */
+      void
+      setup(const Fault<dim> &fault, const MPI_Comm communicator);
+
+      /**
+       * Record the station values of the current step.
+       */
+      void
+      record(const Fault<dim> &fault, const double time);
+
+      /**
+       * Write the fault surface for ParaView.
+       */
+      void
+      write_surface(const Fault<dim>  &fault,
+                    const std::string &directory,
+                    const double       time,
+                    const unsigned int step);
+
+      /**
+       * Write the station files and the rupture-time contours.
+       */
+      void
+      write_tables(const Fault<dim>  &fault,
+                   const std::string &directory,
+                   const double       time_step,
+                   const bool         test_mode) const;
+
+    private:
+      struct Station
+      {
+        std::string                          name;
+        Point<dim>                           location;
+        std::vector<types::global_dof_index> nodes;
+        std::vector<double>                  weights;
+        std::vector<std::array<double, 7>>   rows;
+      };
+
+      double
+      strike_component(const Tensor<1, dim> &v) const;
+      double
+      dip_component(const Tensor<1, dim> &v) const;
+
+      MPI_Comm                                          communicator;
+      std::string                                       station_text;
+      std::string                                       strike_text;
+      std::vector<Station>                              stations;
+      std::set<types::global_dof_index>                 station_keys;
+      Tensor<1, dim>                                    strike;
+      Tensor<1, dim>                                    dip;
+      Point<dim>                                        origin;
+      std::vector<std::vector<types::global_dof_index>> faces;
+      std::vector<std::pair<double, std::string>>       records;
+    };
+  } // namespace Fault
+} // namespace rupture
+
+#endif

@@ -1,0 +1,466 @@
+#include <rupture/base/utilities.h>
+#include <rupture/fault/fault_output.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+
+#include <boost/serialization/set.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <cmath>
+#include <ctime>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    template <int dim>
+    void
+    FaultOutput<dim>::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fault");
+      prm.enter_subsection("Output");
+      {
+        prm.declare_entry(
+          "Stations",
+          "",
+          Patterns::Anything(),
+          "On-fault stations, written as time series in the SCEC format to "
+          "<output>/<name>.dat: 'name: x, y[, z]' entries separated by ';', "
+          "e.g. 'faultst075dp075: 7500, 0, -7500; faultst000dp075: 0, 0, "
+          "-7500'. A station may lie anywhere on the fault (values are "
+          "interpolated); one off the fault is an error.");
+        prm.declare_entry(
+          "Along-strike direction",
+          "",
+          Patterns::Anything(),
+          "Unit vector of the along-strike (h) direction of the outputs, one "
+          "number per dimension. Empty: the horizontal direction in the "
+          "fault, n x e_z (in 2-D the fault's tangent with n x t > 0). The "
+          "down-dip (v) direction is n x strike, turned to point down.");
+      }
+      prm.leave_subsection();
+      prm.leave_subsection();
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Fault");
+      prm.enter_subsection("Output");
+      station_text = prm.get("Stations");
+      strike_text  = prm.get("Along-strike direction");
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      stations.clear();
+      for (const auto &entry : Utilities::split_list(station_text, ';'))
+        {
+          const auto colon = entry.find(':');
+          AssertThrow(colon != std::string::npos,
+                      ExcMessage("<Fault/Output/Stations> expects 'name: x, "
+                                 "y[, z]' entries separated by ';', but <" +
+                                 entry + "> has no ':'."));
+          Station s;
+          s.name = dealii::Utilities::trim(entry.substr(0, colon));
+          AssertThrow(!s.name.empty() &&
+                        s.name.find_first_of("/ \t") == std::string::npos,
+                      ExcMessage("The station name <" + s.name +
+                                 "> in <Fault/Output/Stations> must be "
+                                 "non-empty and have no '/' or spaces."));
+          s.location = Point<dim>(Utilities::parse_vector<dim>(
+            entry.substr(colon + 1), "Fault/Output/Stations (" + s.name + ")"));
+          stations.push_back(s);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::setup(const Fault<dim> &fault, const MPI_Comm comm)
+    {
+      communicator    = comm;
+      origin          = fault.reference_point();
+      const auto all  = fault.gather();
+      faces           = fault.gather_faces();
+      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+
+      std::string error;
+      if (root)
+        {
+          Tensor<1, dim>                                n;
+          std::map<types::global_dof_index, Point<dim>> location;
+          for (const auto &r : all)
+            {
+              n += r.normal;
+              location[r.key] = r.location;
+            }
+          if (n.norm() > 0)
+            n /= n.norm();
+          if (!strike_text.empty())
+            {
+              strike = Utilities::parse_vector<dim>(
+                strike_text, "Fault/Output/Along-strike direction");
+              AssertThrow(strike.norm() > 0,
+                          ExcMessage("<Fault/Output/Along-strike direction> "
+                                     "must not be zero."));
+              strike /= strike.norm();
+            }
+          else if (dim == 2)
+            {
+              strike[0] = n[1];
+              strike[1] = -n[0];
+            }
+          else
+            {
+              Tensor<1, dim> ez;
+              ez[dim - 1] = 1;
+              strike      = cross_product_3d(n, ez);
+              if (strike.norm() < 1e-8)
+                {
+                  strike    = Tensor<1, dim>();
+                  strike[0] = 1;
+                }
+              strike /= strike.norm();
+            }
+          if (dim == 3)
+            {
+              dip = cross_product_3d(n, strike);
+              if (dip[dim - 1] > 0)
+                dip = -dip;
+            }
+
+          // Locate each station in a fault face.
+          for (auto &s : stations)
+            {
+              double best = std::numeric_limits<double>::max();
+              for (const auto &face : faces)
+                {
+                  std::vector<Point<dim>> v;
+                  for (const auto key : face)
+                    v.push_back(location.count(key) ? location[key] :
+                                                      Point<dim>());
+                  bool present = true;
+                  for (const auto key : face)
+                    present = present && location.count(key);
+                  if (!present)
+                    continue; // a face whose border nodes are welded
+                  double              xi = 0, eta = 0, diameter = 0;
+                  std::vector<double> w;
+                  for (const auto &p : v)
+                    diameter = std::max(diameter, p.distance(v[0]));
+                  if (dim == 2)
+                    {
+                      const Tensor<1, dim> e = v[1] - v[0];
+                      xi = (s.location - v[0]) * e / e.norm_square();
+                      w  = {1 - xi, xi};
+                    }
+                  else
+                    for (unsigned int it = 0; it < 20; ++it)
+                      {
+                        w = {(1 - xi) * (1 - eta),
+                             xi * (1 - eta),
+                             (1 - xi) * eta,
+                             xi * eta};
+                        Point<dim> x;
+                        for (unsigned int k = 0; k < 4; ++k)
+                          x += w[k] * v[k];
+                        const Tensor<1, dim> dx =
+                          (v[1] - v[0]) * (1 - eta) + (v[3] - v[2]) * eta;
+                        const Tensor<1, dim> de =
+                          (v[2] - v[0]) * (1 - xi) + (v[3] - v[1]) * xi;
+                        const Tensor<1, dim> r = s.location - x;
+                        const double a = dx * dx, b = dx * de, c = de * de;
+                        const double det = a * c - b * b;
+                        xi += (c * (dx * r) - b * (de * r)) / det;
+                        eta += (a * (de * r) - b * (dx * r)) / det;
+                      }
+                  if (dim == 3)
+                    w = {(1 - xi) * (1 - eta),
+                         xi * (1 - eta),
+                         (1 - xi) * eta,
+                         xi * eta};
+                  Point<dim> x;
+                  for (unsigned int k = 0; k < w.size(); ++k)
+                    x += w[k] * v[k];
+                  const double tol = 1e-6 * diameter;
+                  const double outside =
+                    std::max({-xi, xi - 1, -eta, eta - 1, 0.});
+                  const double distance =
+                    x.distance(s.location) + outside * diameter;
+                  best = std::min(best, distance);
+                  if (distance <= tol)
+                    {
+                      s.nodes   = face;
+                      s.weights = w;
+                      break;
+                    }
+                }
+              if (s.nodes.empty())
+                {
+                  std::ostringstream m;
+                  m << "The station <" << s.name << "> at (" << s.location
+                    << ") given in <Fault/Output/Stations> is not on the "
+                       "fault (its distance to the fault's faces is "
+                    << best
+                    << " m). Stations must lie on the part of the interface "
+                       "that <Fault/Fault region> makes a fault.";
+                  error = m.str();
+                  break;
+                }
+              station_keys.insert(s.nodes.begin(), s.nodes.end());
+            }
+        }
+      error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+      AssertThrow(error.empty(), ExcMessage(error));
+      station_keys = dealii::Utilities::MPI::broadcast(comm, station_keys, 0);
+    }
+
+
+
+    template <int dim>
+    double
+    FaultOutput<dim>::strike_component(const Tensor<1, dim> &v) const
+    {
+      return v * strike;
+    }
+
+
+
+    template <int dim>
+    double
+    FaultOutput<dim>::dip_component(const Tensor<1, dim> &v) const
+    {
+      return (dim == 3) ? v * dip : 0.;
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::record(const Fault<dim> &fault, const double time)
+    {
+      if (stations.empty())
+        return;
+      const auto records = fault.gather(&station_keys);
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      std::map<types::global_dof_index, const typename Fault<dim>::NodeRecord *>
+        by_key;
+      for (const auto &r : records)
+        by_key[r.key] = &r;
+      for (auto &s : stations)
+        {
+          Tensor<1, dim> slip, rate, traction;
+          for (unsigned int k = 0; k < s.nodes.size(); ++k)
+            {
+              const auto &r = *by_key.at(s.nodes[k]);
+              slip += s.weights[k] * r.slip;
+              rate += s.weights[k] * r.slip_velocity;
+              traction += s.weights[k] * r.traction;
+            }
+          s.rows.push_back({time,
+                            strike_component(slip),
+                            strike_component(rate),
+                            strike_component(traction) / 1e6,
+                            dip_component(slip),
+                            dip_component(rate),
+                            dip_component(traction) / 1e6});
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::write_surface(const Fault<dim>  &fault,
+                                    const std::string &directory,
+                                    const double       time,
+                                    const unsigned int step)
+    {
+      const auto records = fault.gather();
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      std::map<types::global_dof_index, unsigned int> index;
+      for (unsigned int i = 0; i < records.size(); ++i)
+        index[records[i].key] = i;
+      std::vector<std::vector<unsigned int>> cells;
+      for (const auto &face : faces)
+        {
+          std::vector<unsigned int> c;
+          for (const auto key : face)
+            if (index.count(key))
+              c.push_back(index[key]);
+          if (c.size() == face.size())
+            {
+              if (dim == 3)
+                std::swap(c[2], c[3]); // lexicographic to VTK order
+              cells.push_back(c);
+            }
+        }
+
+      std::ostringstream out;
+      out << std::setprecision(10);
+      out << "<?xml version=\"1.0\"?>\n"
+          << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" "
+             "byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
+          << "<FieldData><DataArray type=\"Float64\" Name=\"TIME\" "
+             "NumberOfTuples=\"1\" format=\"ascii\">"
+          << time << "</DataArray></FieldData>\n"
+          << "<Piece NumberOfPoints=\"" << records.size()
+          << "\" NumberOfCells=\"" << cells.size() << "\">\n"
+          << "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+             "format=\"ascii\">\n";
+      const auto vector3 = [&](const Tensor<1, dim> &v) {
+        for (unsigned int d = 0; d < 3; ++d)
+          out << (d < dim ? v[d] : 0.) << ' ';
+        out << '\n';
+      };
+      for (const auto &r : records)
+        vector3(r.location);
+      out
+        << "</DataArray></Points>\n<Cells>\n"
+        << "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">\n";
+      for (const auto &c : cells)
+        {
+          for (const auto i : c)
+            out << i << ' ';
+          out << '\n';
+        }
+      out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
+             "format=\"ascii\">\n";
+      for (unsigned int i = 0; i < cells.size(); ++i)
+        out << (i + 1) * GeometryInfo<dim>::vertices_per_face << ' ';
+      out << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+             "format=\"ascii\">\n";
+      for (unsigned int i = 0; i < cells.size(); ++i)
+        out << (dim == 3 ? 9 : 3) << ' ';
+      out << "\n</DataArray>\n</Cells>\n<PointData>\n";
+      const auto vector_field = [&](const std::string &name, auto get) {
+        out << "<DataArray type=\"Float64\" Name=\"" << name
+            << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+        for (const auto &r : records)
+          vector3(get(r));
+        out << "</DataArray>\n";
+      };
+      const auto scalar_field = [&](const std::string &name, auto get) {
+        out << "<DataArray type=\"Float64\" Name=\"" << name
+            << "\" format=\"ascii\">\n";
+        for (const auto &r : records)
+          out << get(r) << '\n';
+        out << "</DataArray>\n";
+      };
+      using R = typename Fault<dim>::NodeRecord;
+      vector_field("slip", [](const R &r) { return r.slip; });
+      vector_field("slip_velocity", [](const R &r) { return r.slip_velocity; });
+      scalar_field("slip_rate",
+                   [](const R &r) { return r.slip_velocity.norm(); });
+      scalar_field("slip_path", [](const R &r) { return r.slip_path; });
+      scalar_field("friction_coefficient",
+                   [](const R &r) { return r.friction; });
+      scalar_field("normal_traction",
+                   [](const R &r) { return r.traction * r.normal; });
+      vector_field("shear_traction", [](const R &r) {
+        return Tensor<1, dim>(r.traction - (r.traction * r.normal) * r.normal);
+      });
+      scalar_field("state", [](const R &r) { return r.status; });
+      scalar_field("rupture_time", [](const R &r) {
+        return r.rupture_time < 0 ? 1e9 : r.rupture_time;
+      });
+      out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+
+      std::ostringstream name;
+      name << "fault/fault_" << std::setw(5) << std::setfill('0') << step
+           << ".vtu";
+      std::filesystem::create_directories(directory + "/fault");
+      Utilities::write_file_atomically(directory + "/" + name.str(), out.str());
+      this->records.emplace_back(time, name.str());
+      std::ostringstream pvd;
+      DataOutBase::write_pvd_record(pvd, this->records);
+      Utilities::write_file_atomically(directory + "/fault.pvd", pvd.str());
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::write_tables(const Fault<dim>  &fault,
+                                   const std::string &directory,
+                                   const double       time_step,
+                                   const bool         test_mode) const
+    {
+      const auto records = fault.gather();
+      if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      for (const auto &s : stations)
+        {
+          std::ostringstream   out;
+          const Tensor<1, dim> r = s.location - origin;
+          out << "# problem = rupture station output\n"
+              << "# author = rupture\n";
+          if (!test_mode)
+            {
+              const std::time_t now = std::time(nullptr);
+              out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
+                  << "\n";
+            }
+          out << "# code = rupture\n# code_version = 0.1\n"
+              << "# time_step = " << time_step << "\n"
+              << "# num_time_steps = " << s.rows.size() << "\n"
+              << "# location = " << strike_component(r) / 1e3
+              << " km along strike, " << dip_component(r) / 1e3
+              << " km down-dip\n"
+              << "# Column #1 = Time (s)\n"
+              << "# Column #2 = horizontal slip (m)\n"
+              << "# Column #3 = horizontal slip rate (m/s)\n"
+              << "# Column #4 = horizontal shear stress (MPa)\n"
+              << "# Column #5 = vertical slip (m)\n"
+              << "# Column #6 = vertical slip rate (m/s)\n"
+              << "# Column #7 = vertical shear stress (MPa)\n"
+              << "t h-slip h-slip-rate h-shear-stress v-slip v-slip-rate "
+                 "v-shear-stress\n"
+              << std::scientific << std::setprecision(7);
+          for (const auto &row : s.rows)
+            {
+              for (unsigned int c = 0; c < row.size(); ++c)
+                out << (c ? " " : "") << row[c];
+              out << "\n";
+            }
+          Utilities::write_file_atomically(directory + "/" + s.name + ".dat",
+                                           out.str());
+        }
+
+      std::ostringstream out;
+      out << "# problem = rupture rupture-time contours\n# author = rupture\n"
+          << "# code = rupture\n# code_version = 0.1\n"
+          << "# Column #1 = Distance along strike (m)\n"
+          << "# Column #2 = Distance down-dip (m)\n"
+          << "# Column #3 = Rupture time (s); 1.0E+09 where the fault did "
+             "not rupture\n"
+          << "j k t\n"
+          << std::scientific << std::setprecision(7);
+      for (const auto &rec : records)
+        {
+          const Tensor<1, dim> r = rec.location - origin;
+          out << strike_component(r) << " " << dip_component(r) << " "
+              << (rec.rupture_time < 0 ? 1e9 : rec.rupture_time) << "\n";
+        }
+      Utilities::write_file_atomically(directory + "/rupture_time.dat",
+                                       out.str());
+    }
+
+
+
+    template class FaultOutput<2>;
+    template class FaultOutput<3>;
+  } // namespace Fault
+} // namespace rupture
