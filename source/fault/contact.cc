@@ -97,11 +97,12 @@ namespace rupture
       const Tensor<1, dim> e   = trial / trial_norm;
       const double         k   = -derivative * pressure;
 
-      r.status         = ContactStatus::slip;
-      r.slip_increment = l;
-      r.friction       = mu;
-      r.traction       = normal_traction * n + tau * e;
-      r.plastic_slip   = old_plastic_slip + l * e;
+      r.status              = ContactStatus::slip;
+      r.slip_increment      = l;
+      r.friction            = mu;
+      r.friction_derivative = derivative;
+      r.traction            = normal_traction * n + tau * e;
+      r.plastic_slip        = old_plastic_slip + l * e;
 
       // Consistent tangent:
       //   D = p_n n n + tau p_t / |T_trial| (I - e e - n n)

@@ -557,6 +557,52 @@ namespace rupture
 
 
     template <int dim>
+    void
+    Fault<dim>::set_time(const double time)
+    {
+      friction_law->set_time(time);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::start_dynamic_phase(const double time)
+    {
+      friction_law->start_dynamic_phase(time);
+      friction_law->enable_weakening(true);
+      // Weakening counts the slip of the dynamic phase: a bonded zone
+      // breaks when the dynamic phase starts.
+      for (auto &pair : pairs)
+        pair.state.slip_path = 0;
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::start_loading_phase()
+    {
+      friction_law->enable_weakening(false);
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::n_weakening() const
+    {
+      unsigned int n = 0;
+      for (const auto &pair : pairs)
+        if (pair.trial.status == ContactStatus::slip &&
+            friction_law->can_weaken(to_3d(pair.location), pair.state))
+          ++n;
+      return dealii::Utilities::MPI::sum(n, communicator);
+    }
+
+
+
+    template <int dim>
     bool
     Fault<dim>::all_stuck() const
     {

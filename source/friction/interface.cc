@@ -26,6 +26,38 @@ namespace rupture
 
 
 
+    void
+    Interface::set_time(const double time)
+    {
+      current_time = time;
+    }
+
+
+
+    void
+    Interface::start_dynamic_phase(const double time)
+    {
+      dynamic_start = time;
+    }
+
+
+
+    void
+    Interface::enable_weakening(const bool enable)
+    {
+      weakening_enabled = enable;
+    }
+
+
+
+    bool
+    Interface::can_weaken(const Point<3> &, const State &) const
+    {
+      return false;
+    }
+
+
+
     namespace
     {
       struct Entry

@@ -1,6 +1,7 @@
 #include <rupture/base/utilities.h>
 #include <rupture/friction/linear_slip_weakening.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -35,6 +36,19 @@ namespace rupture
                           Patterns::Anything(),
                           "Cohesion (Pa) added to the frictional strength, "
                           "as a function of x, y, z. >= 0.");
+        prm.declare_entry(
+          "Forced weakening region",
+          "0",
+          Patterns::Anything(),
+          "Where mu is also forced down in time to nucleate a rupture (a "
+          "function of x, y, z, nonzero inside), e.g. the paper's 20 km x 5 "
+          "km weak patch. 0 for none.");
+        prm.declare_entry("Forced weakening time",
+                          "0.1",
+                          Patterns::Double(0),
+                          "Time (s) over which mu falls from mu_0 to mu_d "
+                          "in the forced-weakening region, counted from the "
+                          "start of the dynamic phase. > 0.");
       }
       prm.leave_subsection();
     }
@@ -62,6 +76,15 @@ namespace rupture
                                        1,
                                        s + "Slip-weakening distance",
                                        "x,y,z");
+        forced_region =
+          Utilities::parse_function<3>(prm.get("Forced weakening region"),
+                                       1,
+                                       s + "Forced weakening region",
+                                       "x,y,z");
+        forced_time = prm.get_double("Forced weakening time");
+        AssertThrow(forced_time > 0,
+                    ExcMessage("<Fault/Linear slip weakening/Forced weakening "
+                               "time> must be > 0 (s)."));
         cohesion_function = Utilities::parse_function<3>(prm.get("Cohesion"),
                                                          1,
                                                          s + "Cohesion",
@@ -115,13 +138,36 @@ namespace rupture
       const double mud = dynamic_coefficient->value(x);
       const double ld  = weakening_distance->value(x);
       const double s   = old.slip_path + slip_increment;
+      double       mu  = mud;
+      derivative       = 0;
+      if (!weakening_enabled)
+        return mu0;
       if (s < ld)
         {
           derivative = -(mu0 - mud) / ld;
-          return mu0 - (mu0 - mud) * s / ld;
+          mu         = mu0 - (mu0 - mud) * s / ld;
         }
-      derivative = 0;
-      return mud;
+      if (forced_region->value(x) != 0)
+        {
+          const double w =
+            std::clamp((current_time - dynamic_start) / forced_time, 0., 1.);
+          const double forced = mu0 - (mu0 - mud) * w;
+          if (forced < mu)
+            {
+              derivative = 0;
+              mu         = forced;
+            }
+        }
+      return mu;
+    }
+
+
+
+    bool
+    LinearSlipWeakening::can_weaken(const Point<3> &x, const State &state) const
+    {
+      return static_coefficient->value(x) > dynamic_coefficient->value(x) &&
+             state.slip_path < weakening_distance->value(x);
     }
 
 

@@ -202,8 +202,30 @@ namespace rupture
     if (has_absorbing)
       absorbing_damping.compress(VectorOperation::add);
 
+    // The first phase: the quasi-static loading phase, or the run itself.
+    current_scheme =
+      time_parameters.loading_phase ? Scheme::quasi_static : scheme;
+    if (time_parameters.loading_phase)
+      prepare_phase(Scheme::quasi_static,
+                    time_parameters.loading_time_step,
+                    time_parameters.loading_end_time);
+    else
+      prepare_phase(scheme,
+                    time_parameters.time_step,
+                    time_parameters.end_time);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::prepare_phase(const TimeIntegration::Scheme scheme,
+                                const double requested_time_step,
+                                const double duration)
+  {
+    using Scheme = TimeIntegration::Scheme;
     // The time step, and for the explicit scheme its stability check.
-    time_step = time_parameters.time_step;
+    time_step = requested_time_step;
     if (scheme == Scheme::explicit_central_difference)
       {
         const double omega = compute_highest_frequency();
@@ -229,9 +251,8 @@ namespace rupture
                         "step> = 0 to use <Courant fraction> times it, or "
                         "use the implicit scheme."));
       }
-    const double n_steps =
-      std::ceil(time_parameters.end_time / time_step - 1e-9);
-    time_step = time_parameters.end_time / n_steps;
+    const double n_steps = std::ceil(duration / time_step - 1e-9);
+    time_step            = duration / n_steps;
 
     if (scheme == Scheme::explicit_central_difference)
       {

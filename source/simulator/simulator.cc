@@ -459,7 +459,8 @@ namespace rupture
                          communicator);
     else
       mass_matrix.clear();
-    if (scheme != Scheme::explicit_central_difference)
+    if (scheme != Scheme::explicit_central_difference ||
+        time_parameters.loading_phase)
       system_matrix.reinit(locally_owned_dofs,
                            locally_owned_dofs,
                            dsp,
@@ -613,63 +614,40 @@ namespace rupture
       fault_output->record(*fault, time);
     write_step_output(true);
 
-    const unsigned int n_steps = static_cast<unsigned int>(
-      std::ceil(time_parameters.end_time / time_step - 1e-9));
-    pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
-          << n_steps << " steps to t = " << time_parameters.end_time << " s\n";
-
-    while (step < n_steps)
+    if (time_parameters.loading_phase)
       {
-        ++step;
-        time = (step == n_steps) ? time_parameters.end_time : step * time_step;
-
-        switch (time_parameters.scheme)
-          {
-            case TimeIntegration::Scheme::implicit_newmark:
-              implicit_step();
-              break;
-            case TimeIntegration::Scheme::explicit_central_difference:
-              explicit_step();
-              break;
-            case TimeIntegration::Scheme::quasi_static:
-              quasi_static_step();
-              break;
-          }
-        check_finite(displacement, "displacement");
-        statistics.add_row(statistics_row());
+        pcout << "*** Loading phase (quasi-static)\n";
         if (fault)
-          fault_output->record(*fault, time);
+          fault->start_loading_phase();
+        run_phase(time_parameters.loading_end_time,
+                  fault && time_parameters.stop_loading_when_weakening);
 
-        if (step % screen_interval == 0 || step == n_steps)
+        // The end state of the loading phase is the initial state of the
+        // dynamic phase: displacement, stress, fault tractions and slip
+        // carry over; the body starts from rest (up to the boundary
+        // velocities) with the acceleration of its current forces.
+        const double start = time;
+        current_scheme     = time_parameters.scheme;
+        pcout << "*** Dynamic phase (" << time_parameters.scheme_name()
+              << ") from t = " << std::setprecision(6) << start << " s\n";
+        prepare_phase(current_scheme,
+                      time_parameters.time_step,
+                      time_parameters.end_time);
+        if (fault)
+          fault->start_dynamic_phase(start);
+        if (current_scheme != TimeIntegration::Scheme::quasi_static)
           {
-            pcout << "*** Step " << step << ": t = " << std::scientific
-                  << std::setprecision(4) << time
-                  << " s, dt = " << std::setprecision(2) << time_step << " s";
-            if (fault)
-              {
-                const Fault::Statistics f = fault->statistics();
-                pcout << "\n    Newton: " << last_newton_iterations
-                      << " iterations; fault: " << f.n_slipping << " slipping, "
-                      << f.n_open << " open nodes, max slip "
-                      << std::setprecision(3) << f.max_slip
-                      << " m, max slip rate " << f.max_slip_rate << " m/s";
-              }
-            if (!test_mode)
-              {
-                const double elapsed = MPI_Wtime() - wall_time_start;
-                const double left    = elapsed / step * (n_steps - step);
-                pcout << "  [" << std::fixed << std::setprecision(0)
-                      << 100. * step / n_steps << "%, " << std::setprecision(1)
-                      << left << " s left]";
-                if (time_parameters.scheme !=
-                    TimeIntegration::Scheme::explicit_central_difference)
-                  pcout << "\n    Linear solver: " << last_linear_iterations
-                        << " iterations";
-              }
-            pcout << std::defaultfloat << std::endl;
+            velocity = 0;
+            set_kinematic_velocity(velocity);
+            VectorType load(locally_owned_dofs, communicator);
+            assemble_load_vector(time, load);
+            compute_acceleration(load);
+            compute_damping_force(velocity, damping_force);
           }
-        write_step_output(step == n_steps);
+        run_phase(start + time_parameters.end_time, false);
       }
+    else
+      run_phase(time_parameters.end_time, false);
 
     if (fault)
       fault_output->write_tables(*fault,
@@ -710,8 +688,7 @@ namespace rupture
     // The implicit and quasi-static schemes close the budget to round-off
     // (trapezoidal rule); central difference only to O(dt^2).
     const double tolerance =
-      (time_parameters.scheme ==
-       TimeIntegration::Scheme::explicit_central_difference) ?
+      (current_scheme == TimeIntegration::Scheme::explicit_central_difference) ?
         1e-2 :
         1e-8;
     pcout << "   Energy balance error below " << tolerance
@@ -722,6 +699,84 @@ namespace rupture
         pcout << "   Energy balance error " << last[8] << " J\n";
         timer.print_summary();
       }
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::run_phase(const double end_time,
+                            const bool   stop_when_weakening)
+  {
+    const double       start   = time;
+    const unsigned int n_steps = static_cast<unsigned int>(
+      std::ceil((end_time - start) / time_step - 1e-9));
+    pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
+          << n_steps << " steps to t = " << end_time << " s\n";
+
+    for (unsigned int i = 1; i <= n_steps; ++i)
+      {
+        ++step;
+        time = (i == n_steps) ? end_time : start + i * time_step;
+        if (fault)
+          fault->set_time(time);
+
+        switch (current_scheme)
+          {
+            case TimeIntegration::Scheme::implicit_newmark:
+              implicit_step();
+              break;
+            case TimeIntegration::Scheme::explicit_central_difference:
+              explicit_step();
+              break;
+            case TimeIntegration::Scheme::quasi_static:
+              quasi_static_step();
+              break;
+          }
+        check_finite(displacement, "displacement");
+        statistics.add_row(statistics_row());
+        if (fault)
+          fault_output->record(*fault, time);
+
+        const bool stop = stop_when_weakening && fault->n_weakening() > 0;
+        if (step % screen_interval == 0 || i == n_steps || stop)
+          {
+            pcout << "*** Step " << step << ": t = " << std::scientific
+                  << std::setprecision(4) << time
+                  << " s, dt = " << std::setprecision(2) << time_step << " s";
+            if (fault)
+              {
+                const Fault::Statistics f = fault->statistics();
+                pcout << "\n    Newton: " << last_newton_iterations
+                      << " iterations; fault: " << f.n_slipping << " slipping, "
+                      << f.n_open << " open nodes, max slip "
+                      << std::setprecision(3) << f.max_slip
+                      << " m, max slip rate " << f.max_slip_rate << " m/s";
+              }
+            if (!test_mode)
+              {
+                const double elapsed = MPI_Wtime() - wall_time_start;
+                const double left    = elapsed / step * (n_steps - i);
+                pcout << "  [" << std::fixed << std::setprecision(0)
+                      << 100. * i / n_steps << "%, " << std::setprecision(1)
+                      << left << " s left]";
+                if (current_scheme !=
+                    TimeIntegration::Scheme::explicit_central_difference)
+                  pcout << "\n    Linear solver: " << last_linear_iterations
+                        << " iterations";
+              }
+            pcout << std::defaultfloat << std::endl;
+          }
+        write_step_output(i == n_steps || stop);
+        if (stop)
+          {
+            pcout << "   A bonded zone of the fault reached its strength at "
+                  << "t = " << std::setprecision(6) << time
+                  << " s: the loading phase ends.\n";
+            return false;
+          }
+      }
+    return true;
   }
 
 

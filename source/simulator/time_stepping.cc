@@ -6,6 +6,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -73,7 +74,7 @@ namespace rupture
                                         VectorType       &y) const
   {
     y = 0;
-    if (time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
+    if (current_scheme == TimeIntegration::Scheme::quasi_static)
       return;
     VectorType tmp(v);
     if (rayleigh_alpha != 0)
@@ -144,14 +145,57 @@ namespace rupture
     message << "At step " << step << " (t = " << time << " s) the " << what
             << " is no longer finite, and the run was stopped before "
                "writing it. ";
-    if (time_parameters.scheme ==
-        TimeIntegration::Scheme::explicit_central_difference)
+    if (current_scheme == TimeIntegration::Scheme::explicit_central_difference)
       message << "The explicit scheme blew up: its time step " << time_step
               << " s against the stable limit " << stable_time_step
               << " s. Reduce <Time integration/Time step>.";
     else
       message << "Check the loads and material constants for extreme values.";
     AssertThrow(false, ExcMessage(message.str()));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_acceleration(const VectorType &load)
+  {
+    // M a_0 = f - K u_0 - C v_0 on the free DoFs.
+    VectorType r(load), tmp(load);
+    stiffness_matrix.vmult(tmp, displacement);
+    r -= tmp;
+    compute_damping_force(velocity, tmp);
+    r -= tmp;
+    r -= contact_force;
+    increment_constraints.set_zero(r);
+    if (use_lumped_mass)
+      {
+        acceleration = r;
+        for (const auto i : locally_owned_dofs)
+          acceleration(i) =
+            (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
+              r(i) / lumped_mass(i) :
+              0.;
+        acceleration.compress(VectorOperation::insert);
+      }
+    else if (r.l2_norm() > 0)
+      {
+        ConstrainedMass        op{mass_matrix,
+                           increment_constraints,
+                           locally_owned_dofs};
+        DiagonalPreconditioner jacobi;
+        jacobi.inverse.reinit(locally_owned_dofs, communicator);
+        for (const auto i : locally_owned_dofs)
+          jacobi.inverse(i) = 1. / mass_matrix.diag_element(i);
+        jacobi.inverse.compress(VectorOperation::insert);
+        SolverControl        control(1000, 1e-14 * r.l2_norm());
+        SolverCG<VectorType> cg(control);
+        acceleration = 0;
+        cg.solve(op, acceleration, r, jacobi);
+        hanging_constraints.distribute(acceleration);
+      }
+    else
+      acceleration = 0;
   }
 
 
@@ -196,7 +240,7 @@ namespace rupture
     if (fault)
       assemble_contact(contact_force, false, 1);
 
-    if (time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
+    if (current_scheme == TimeIntegration::Scheme::quasi_static)
       {
         velocity     = 0;
         acceleration = 0;
@@ -204,42 +248,7 @@ namespace rupture
     else
       {
         set_kinematic_velocity(velocity);
-        // M a_0 = f - K u_0 - C v_0 on the free DoFs.
-        VectorType r(load), tmp(load);
-        stiffness_matrix.vmult(tmp, displacement);
-        r -= tmp;
-        compute_damping_force(velocity, tmp);
-        r -= tmp;
-        r -= contact_force;
-        increment_constraints.set_zero(r);
-        if (use_lumped_mass)
-          {
-            acceleration = r;
-            for (const auto i : locally_owned_dofs)
-              acceleration(i) = (lumped_mass(i) > 0 &&
-                                 !increment_constraints.is_constrained(i)) ?
-                                  r(i) / lumped_mass(i) :
-                                  0.;
-            acceleration.compress(VectorOperation::insert);
-          }
-        else if (r.l2_norm() > 0)
-          {
-            ConstrainedMass        op{mass_matrix,
-                               increment_constraints,
-                               locally_owned_dofs};
-            DiagonalPreconditioner jacobi;
-            jacobi.inverse.reinit(locally_owned_dofs, communicator);
-            for (const auto i : locally_owned_dofs)
-              jacobi.inverse(i) = 1. / mass_matrix.diag_element(i);
-            jacobi.inverse.compress(VectorOperation::insert);
-            SolverControl        control(1000, 1e-14 * r.l2_norm());
-            SolverCG<VectorType> cg(control);
-            acceleration = 0;
-            cg.solve(op, acceleration, r, jacobi);
-            hanging_constraints.distribute(acceleration);
-          }
-        else
-          acceleration = 0;
+        compute_acceleration(load);
       }
 
     // Forces and energies of the initial state.
@@ -248,7 +257,7 @@ namespace rupture
     compute_damping_force(velocity, damping_force);
     VectorType ma(load);
     ma = 0;
-    if (time_parameters.scheme != TimeIntegration::Scheme::quasi_static)
+    if (current_scheme != TimeIntegration::Scheme::quasi_static)
       apply_mass(acceleration, ma);
     // The force the body is in balance with at the start. A quasi-static
     // run follows an equilibrium path, on which the loads grow from the
@@ -256,13 +265,13 @@ namespace rupture
     applied_force = load;
     for (const auto i : locally_owned_dofs)
       if (increment_constraints.is_constrained(i) ||
-          time_parameters.scheme == TimeIntegration::Scheme::quasi_static)
+          current_scheme == TimeIntegration::Scheme::quasi_static)
         applied_force(i) = ku(i) + ma(i) + damping_force(i) + contact_force(i);
     applied_force.compress(VectorOperation::insert);
 
     strain_energy = 0.5 * (displacement * ku);
     VectorType mv(load);
-    if (time_parameters.scheme != TimeIntegration::Scheme::quasi_static)
+    if (current_scheme != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(velocity, mv);
         kinetic_energy = 0.5 * (velocity * mv);
@@ -302,7 +311,7 @@ namespace rupture
     VectorType tmp(load);
     stiffness_matrix.vmult(tmp, displacement);
     strain_energy = 0.5 * (displacement * tmp);
-    if (time_parameters.scheme != TimeIntegration::Scheme::quasi_static)
+    if (current_scheme != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(velocity, tmp);
         kinetic_energy = 0.5 * (velocity * tmp);
@@ -369,7 +378,13 @@ namespace rupture
           {
             const unsigned long signature = fault->status_signature();
             if (k == 0)
-              reference = std::max(norm, 1e-300);
+              {
+                // The force scale of the step: the residual may start tiny
+                // (a body near equilibrium), so the internal forces count.
+                stiffness_matrix.vmult(scratch, old_u);
+                increment_constraints.set_zero(scratch);
+                reference = std::max({norm, scratch.l2_norm(), 1e-300});
+              }
             else
               {
                 // The paper's two criteria (Fig. 6). A step in which every
@@ -438,7 +453,29 @@ namespace rupture
             assemble_contact(scratch, true, -1);
           }
         increment_constraints.distribute(increment);
-        displacement += increment;
+        if (fault)
+          {
+            // Backtracking line search: slip weakening and changes between
+            // stick and slip can make a full Newton step overshoot.
+            const VectorType u_iteration(displacement);
+            double           alpha = 1;
+            for (unsigned int trial = 0;; ++trial)
+              {
+                displacement = u_iteration;
+                displacement.add(alpha, increment);
+                update_rates();
+                compute_residual();
+                free_residual = residual;
+                increment_constraints.set_zero(free_residual);
+                if (free_residual.l2_norm() <= (1 - 1e-4 * alpha) * norm ||
+                    trial == 6)
+                  break;
+                alpha *= 0.5;
+              }
+            increment *= alpha;
+          }
+        else
+          displacement += increment;
         increment_norm         = increment.l2_norm();
         last_newton_iterations = k + 1;
       }

@@ -56,6 +56,36 @@ namespace rupture
           "Let the explicit scheme run with a step above its stable limit. "
           "Only for stability studies: such a run blows up, and is stopped "
           "as soon as a value is no longer finite.");
+        prm.enter_subsection("Loading phase");
+        {
+          prm.declare_entry(
+            "Enabled",
+            "false",
+            Patterns::Bool(),
+            "Step 1 of the paper's load sequence: a quasi-static loading "
+            "phase (gravity, plate motion) before the run of <Scheme>. Its "
+            "final state (stress, fault tractions, slip) is the initial "
+            "state of the dynamic phase, and <End time> then counts from "
+            "the start of the dynamic phase.");
+          prm.declare_entry("Time step",
+                            "3.15576e7",
+                            Patterns::Double(),
+                            "Time step (s) of the loading phase, > 0 (one "
+                            "year by default).");
+          prm.declare_entry("End time",
+                            "3.15576e9",
+                            Patterns::Double(),
+                            "Time (s) at which the loading phase ends at "
+                            "the latest, > 0 (100 years by default).");
+          prm.declare_entry(
+            "Stop when a bonded zone slips",
+            "true",
+            Patterns::Bool(),
+            "End the loading phase at the first step in which a fault "
+            "point slips while its friction weakens, i.e. a bonded zone "
+            "reaches its strength; the dynamic phase starts from there.");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
     }
@@ -79,9 +109,21 @@ namespace rupture
         courant_fraction         = prm.get_double("Courant fraction");
         end_time                 = prm.get_double("End time");
         allow_unstable_time_step = prm.get_bool("Allow unstable time step");
+        prm.enter_subsection("Loading phase");
+        loading_phase     = prm.get_bool("Enabled");
+        loading_time_step = prm.get_double("Time step");
+        loading_end_time  = prm.get_double("End time");
+        stop_loading_when_weakening =
+          prm.get_bool("Stop when a bonded zone slips");
+        prm.leave_subsection();
       }
       prm.leave_subsection();
 
+      if (loading_phase)
+        AssertThrow(loading_time_step > 0 && loading_end_time > 0 &&
+                      std::isfinite(loading_end_time),
+                    ExcMessage("<Time integration/Loading phase/Time step> "
+                               "and <End time> must be > 0 (s)."));
       AssertThrow(end_time > 0 && std::isfinite(end_time),
                   ExcMessage("<Time integration/End time> is " +
                              std::to_string(end_time) +

@@ -40,6 +40,9 @@ namespace rupture
       Tensor<1, dim> plastic_slip;
       /// Friction coefficient in effect.
       double friction = 0;
+      /// Its derivative with respect to the slip increment (1/m): negative
+      /// while the point weakens.
+      double friction_derivative = 0;
       /// True if slip weakening is steeper than the tangential penalty, so
       /// that the tangent is singular or indefinite (snap-back).
       bool unstable_softening = false;

@@ -177,6 +177,33 @@ namespace rupture
       status_signature() const;
 
       /**
+       * Set the time (s) at the end of the step about to be solved.
+       */
+      void
+      set_time(const double time);
+
+      /**
+       * Tell the friction law that the dynamic phase starts now.
+       */
+      void
+      start_dynamic_phase(const double time);
+
+      /**
+       * During a loading phase friction does not weaken: bonded zones hold
+       * up to their static strength.
+       */
+      void
+      start_loading_phase();
+
+      /**
+       * The number of nodes (over all ranks) that slipped in the last
+       * assemble() where friction can still weaken: a bonded zone reaching
+       * its strength.
+       */
+      unsigned int
+      n_weakening() const;
+
+      /**
        * True if no pair slipped in the last assemble().
        */
       bool

@@ -79,6 +79,39 @@ namespace rupture
                    const double    slip_increment,
                    const double    dt,
                    State          &updated) const;
+
+      /**
+       * The time (s) at the end of the step being solved, for laws that
+       * depend on it (forced nucleation).
+       */
+      void
+      set_time(const double time);
+
+      /**
+       * The time (s) at which the dynamic phase of the load sequence
+       * starts (0 without a loading phase).
+       */
+      void
+      start_dynamic_phase(const double time);
+
+      /**
+       * Switch weakening off (during a quasi-static loading phase, when
+       * bonded zones hold up to their static strength) or on.
+       */
+      void
+      enable_weakening(const bool enable);
+
+      /**
+       * Whether the friction at @p x can still weaken from @p state (a
+       * bonded zone): slipping there ends a loading phase.
+       */
+      virtual bool
+      can_weaken(const Point<3> &x, const State &state) const;
+
+    protected:
+      double current_time      = 0;
+      double dynamic_start     = 0;
+      bool   weakening_enabled = true;
     };
 
     /**

@@ -15,6 +15,12 @@ namespace rupture
      * to L_d, and stays at mu_d beyond:
      *   mu(s) = mu_0 - (mu_0 - mu_d) s / L_d  for s < L_d,  mu_d otherwise.
      * mu_0, mu_d, L_d and the cohesion are functions of position.
+     *
+     * Forced nucleation (the paper's weak patch "where a quick reduction of
+     * the friction coefficient is enforced at the beginning of dynamic
+     * analysis"): inside the forced-weakening region mu also falls linearly
+     * in time from mu_0 at the start of the dynamic phase to mu_d after the
+     * forced-weakening time, and the smaller of the two applies.
      */
     class LinearSlipWeakening : public Interface
     {
@@ -38,11 +44,16 @@ namespace rupture
       double
       cohesion(const Point<3> &x) const override;
 
+      bool
+      can_weaken(const Point<3> &x, const State &state) const override;
+
     private:
       std::unique_ptr<FunctionParser<3>> static_coefficient;
       std::unique_ptr<FunctionParser<3>> dynamic_coefficient;
       std::unique_ptr<FunctionParser<3>> weakening_distance;
       std::unique_ptr<FunctionParser<3>> cohesion_function;
+      std::unique_ptr<FunctionParser<3>> forced_region;
+      double                             forced_time;
     };
   } // namespace Friction
 } // namespace rupture

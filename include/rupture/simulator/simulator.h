@@ -82,6 +82,26 @@ namespace rupture
     // --- assembly (assembly.cc) ---
     void
     assemble_physics_matrices();
+    /**
+     * Set the time step of a phase of the run and build what its scheme
+     * needs: the effective stiffness and its preconditioner (implicit,
+     * quasi-static), or the stability check and the diagonal (explicit).
+     */
+    void
+    prepare_phase(const TimeIntegration::Scheme scheme,
+                  const double                  requested_time_step,
+                  const double                  duration);
+    /**
+     * Acceleration from M a = f - K u - C v - F_contact on the free DoFs.
+     */
+    void
+    compute_acceleration(const VectorType &load);
+    /**
+     * Step from the current time to @p end_time with the current scheme;
+     * returns false if a stop criterion ended the phase early.
+     */
+    bool
+    run_phase(const double end_time, const bool stop_when_weakening);
     void
     assemble_system_matrix(const double stiffness_factor,
                            const double mass_factor,
@@ -159,17 +179,19 @@ namespace rupture
     mutable TimerOutput timer;
 
     // Parameters.
-    std::string                          output_directory;
-    bool                                 test_mode;
-    unsigned int                         n_global_refinements;
-    unsigned int                         fe_degree;
-    bool                                 use_lumped_mass;
-    double                               rayleigh_alpha;
-    double                               rayleigh_beta;
-    double                               gravity;
-    double                               output_interval;
-    unsigned int                         screen_interval;
-    TimeIntegration::Parameters          time_parameters;
+    std::string                 output_directory;
+    bool                        test_mode;
+    unsigned int                n_global_refinements;
+    unsigned int                fe_degree;
+    bool                        use_lumped_mass;
+    double                      rayleigh_alpha;
+    double                      rayleigh_beta;
+    double                      gravity;
+    double                      output_interval;
+    unsigned int                screen_interval;
+    TimeIntegration::Parameters time_parameters;
+    /// The scheme of the phase being run.
+    TimeIntegration::Scheme              current_scheme;
     std::unique_ptr<FunctionParser<dim>> body_force;
     bool                                 has_body_force;
     std::unique_ptr<FunctionParser<dim>> initial_displacement;

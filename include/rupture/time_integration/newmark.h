@@ -46,6 +46,12 @@ namespace rupture
       /// Whether the explicit scheme may run above its stable step (for
       /// stability studies only).
       bool allow_unstable_time_step;
+      /// The quasi-static loading phase (step 1 of the paper's load
+      /// sequence) that precedes the run of <Scheme>, if enabled.
+      bool   loading_phase;
+      double loading_time_step;
+      double loading_end_time;
+      bool   stop_loading_when_weakening;
 
       std::string
       scheme_name() const;
