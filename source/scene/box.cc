@@ -160,16 +160,7 @@ namespace rupture
     std::map<std::string, types::boundary_id>
     Box<dim>::get_boundary_names() const
     {
-      // Colorized boundary ids of subdivided_hyper_rectangle: 2d for the
-      // lower and 2d+1 for the upper face in direction d.
-      if (dim == 2)
-        return {{"west", 0}, {"east", 1}, {"bottom", 2}, {"top", 3}};
-      return {{"west", 0},
-              {"east", 1},
-              {"south", 2},
-              {"north", 3},
-              {"bottom", 4},
-              {"top", 5}};
+      return box_boundary_names<dim>();
     }
 
     RUPTURE_REGISTER_SCENE(

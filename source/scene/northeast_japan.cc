@@ -204,14 +204,7 @@ namespace rupture
     std::map<std::string, types::boundary_id>
     NortheastJapan<dim>::get_boundary_names() const
     {
-      if (dim == 2)
-        return {{"west", 0}, {"east", 1}, {"bottom", 2}, {"top", 3}};
-      return {{"west", 0},
-              {"east", 1},
-              {"south", 2},
-              {"north", 3},
-              {"bottom", 4},
-              {"top", 5}};
+      return box_boundary_names<dim>();
     }
 
     RUPTURE_REGISTER_SCENE(

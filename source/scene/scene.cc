@@ -98,6 +98,28 @@ namespace rupture
 
 
 
+    template <int dim>
+    std::map<std::string, types::boundary_id>
+    box_boundary_names()
+    {
+      // Colorized ids: 2d for the lower and 2d+1 for the upper face in
+      // direction d.
+      if (dim == 2)
+        return {{"west", 0}, {"east", 1}, {"bottom", 2}, {"top", 3}};
+      return {{"west", 0},
+              {"east", 1},
+              {"south", 2},
+              {"north", 3},
+              {"bottom", 4},
+              {"top", 5}};
+    }
+
+
+
+    template std::map<std::string, types::boundary_id>
+    box_boundary_names<2>();
+    template std::map<std::string, types::boundary_id>
+    box_boundary_names<3>();
     template std::unique_ptr<Interface<2>>
     create<2>(ParameterHandler &);
     template std::unique_ptr<Interface<3>>

@@ -51,6 +51,15 @@ namespace rupture
 
 
     /**
+     * The boundary names of a box-shaped scene built with colorized
+     * subdivided_hyper_rectangle: west/east (x), south/north (y, 3-D) and
+     * bottom/top (the last coordinate).
+     */
+    template <int dim>
+    std::map<std::string, types::boundary_id>
+    box_boundary_names();
+
+    /**
      * Add a scene to the registry. Use RUPTURE_REGISTER_SCENE instead of
      * calling this directly.
      */
