@@ -160,6 +160,13 @@ namespace rupture
                         "step (the paper's two criteria, Fig. 6). A step in "
                         "which every fault node stuck in the last two "
                         "iterations is linear and needs only the first.");
+      prm.declare_entry("Maximum step cuts",
+                        "4",
+                        Patterns::Integer(0, 20),
+                        "When Newton's method fails in an implicit step, "
+                        "the step is redone as two half steps, recursively, "
+                        "up to this many times; then the run stops with a "
+                        "diagnosis. 0 stops at the first failure.");
       prm.declare_entry("Maximum Newton iterations",
                         "25",
                         Patterns::Integer(1),
@@ -279,6 +286,7 @@ namespace rupture
     newton_displacement_tolerance =
       prm.get_double("Newton displacement tolerance");
     max_newton_iterations = prm.get_integer("Maximum Newton iterations");
+    max_step_cuts         = prm.get_integer("Maximum step cuts");
     prm.leave_subsection();
 
     time_parameters.parse_parameters(prm);

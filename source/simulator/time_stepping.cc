@@ -425,7 +425,7 @@ namespace rupture
                 else
                   message << "Reduce <Time integration/Time step>, or raise "
                              "<Solver/Maximum Newton iterations>.";
-                AssertThrow(false, ExcMessage(message.str()));
+                throw NewtonFailure(message.str());
               }
             last_signature = signature;
           }

@@ -26,6 +26,7 @@
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,14 @@ namespace rupture
     initialize_state();
     void
     implicit_step();
+    /// One implicit Newmark step of size time_step ending at time.
+    void
+    implicit_substep();
+    /// Newton's method did not converge (the step may be cut).
+    struct NewtonFailure : public std::runtime_error
+    {
+      using std::runtime_error::runtime_error;
+    };
     void
     explicit_step();
     void
@@ -271,6 +280,8 @@ namespace rupture
     double       newton_force_tolerance;
     double       newton_displacement_tolerance;
     unsigned int max_newton_iterations;
+    unsigned int max_step_cuts;
+    unsigned int n_step_cuts = 0;
     double       wall_time_start;
     double       next_output_time;
 
