@@ -488,6 +488,59 @@ namespace rupture
   void
   Simulator<dim>::implicit_step()
   {
+    // Try the step; if Newton's method fails, redo it as two half steps,
+    // recursively, up to <Solver/Maximum step cuts> times. The fault state
+    // and the energy budget change only when a (sub)step has converged.
+    const double end = time, dt = time_step;
+    const auto   set_step = [&](const double h) {
+      time_step = h;
+      const TimeIntegration::NewmarkCoefficients c(time_parameters.beta,
+                                                   time_parameters.gamma,
+                                                   h);
+      assemble_system_matrix(1 + c.a1 * rayleigh_beta,
+                             c.a0 + c.a1 * rayleigh_alpha,
+                             c.a1);
+    };
+    std::function<void(double, double, unsigned int)> attempt =
+      [&](const double t_start, const double h, const unsigned int depth) {
+        const VectorType u(displacement), v(velocity), a(acceleration);
+        if (h != time_step)
+          set_step(h);
+        time = t_start + h;
+        if (fault)
+          fault->set_time(time);
+        try
+          {
+            implicit_substep();
+          }
+        catch (const NewtonFailure &failure)
+          {
+            if (depth == max_step_cuts)
+              throw NewtonFailure(std::string(failure.what()) +
+                                  " The step was cut " + std::to_string(depth) +
+                                  " times (<Solver/Maximum step cuts>).");
+            displacement = u;
+            velocity     = v;
+            acceleration = a;
+            pcout << "    Newton failed with dt = " << h
+                  << " s: the step is cut in half\n";
+            ++n_step_cuts;
+            attempt(t_start, h / 2, depth + 1);
+            attempt(t_start + h / 2, h / 2, depth + 1);
+          }
+      };
+    attempt(end - dt, dt, 0);
+    if (time_step != dt)
+      set_step(dt);
+    time = end;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::implicit_substep()
+  {
     TimerOutput::Scope                         t(timer, "Implicit step");
     const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
                                                  time_parameters.gamma,

@@ -86,6 +86,39 @@ main(int argc, char **argv)
               std::abs(mean_rate - 2.2) < 0.022 ? "yes" : "no");
   std::printf("  slip history within tolerance: %s\n", ok ? "yes" : "no");
 
+  // Step cutting: this problem needs 3 Newton iterations per step; with at
+  // most 2 every attempt fails, so each step is cut in half until <Maximum
+  // step cuts> is used up, and the run stops with a diagnosis that says so.
+  std::printf("at most 2 Newton iterations per step:\n");
+  std::string errors;
+  int         code = tests::run_capture({prm,
+                                         "--set",
+                                         "Solver/Maximum Newton iterations=2",
+                                         "--set",
+                                         "Time integration/End time=0.05"},
+                                errors);
+  {
+    const std::string log  = tests::read_file("output-plane-wave/log.txt");
+    unsigned int      cuts = 0;
+    for (std::size_t p = log.find("cut in half"); p != std::string::npos;
+         p             = log.find("cut in half", p + 1))
+      ++cuts;
+    std::printf("  exit code %d after %u step cuts; the diagnosis names the "
+                "cuts: %s\n",
+                code,
+                cuts,
+                errors.find("cut 4 times") != std::string::npos ? "yes" : "no");
+  }
+  code = tests::run_capture({prm,
+                             "--set",
+                             "Solver/Maximum Newton iterations=2",
+                             "--set",
+                             "Solver/Maximum step cuts=0"},
+                            errors);
+  std::printf("  with no step cuts allowed: exit code %d, cut 0 times: %s\n",
+              code,
+              errors.find("cut 0 times") != std::string::npos ? "yes" : "no");
+
   std::printf("tau_0 = 5.9 < tau_s = 6:\n");
   if (tests::run({prm, "--set", "Fault/Initial traction=5.9; -10"}) != 0)
     std::printf("  run failed\n");
