@@ -99,6 +99,23 @@ main(int argc, char **argv)
         base + "subsection Initial conditions\n  set Displacement = "
                "sin(q*x); 0\nend\n");
 
+  const std::string fault =
+    "subsection Fault\n  set Model = penalty contact\n"
+    "  set Plane point = 0, 500\n  set Plane normal = 0, 1\n";
+  write("fault_plane.prm",
+        base + "subsection Fault\n  set Model = penalty contact\n"
+               "  set Plane point = 0, 300\n  set Plane normal = 0, 1\nend\n");
+  write("fault_penalty.prm", base + fault + "  set Normal penalty = -1\nend\n");
+  write("fault_explicit.prm",
+        base + fault +
+          "end\nsubsection Time integration\n  set Scheme = explicit "
+          "central difference\n  set Time step = 0\nend\n");
+  write("fault_friction.prm",
+        base + fault +
+          "  subsection Linear slip weakening\n    set Static friction "
+          "coefficient = 0.5\n    set Dynamic friction coefficient = 0.6\n"
+          "  end\nend\n");
+
   check("unknown entry", {"unknown_entry.prm"});
   check("malformed value", {"malformed_value.prm"});
   check("dimension out of range", {"bad_dimension.prm"});
@@ -113,6 +130,10 @@ main(int argc, char **argv)
   check("roller component that does not exist in 2-D", {"roller.prm"});
   check("material id without material", {"material_id.prm"});
   check("function with an unknown variable", {"function.prm"});
+  check("fault plane that cuts through cells", {"fault_plane.prm"});
+  check("negative fault penalty", {"fault_penalty.prm"});
+  check("fault with the explicit scheme", {"fault_explicit.prm"});
+  check("mu_0 below mu_d", {"fault_friction.prm"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});
