@@ -32,11 +32,20 @@ namespace rupture
       {
         prm.declare_entry("Model",
                           "none",
-                          Patterns::Selection("none|penalty contact"),
+                          Patterns::Selection(
+                            "none|penalty contact|traction at split nodes"),
                           "'none' for a body without a fault. 'penalty "
                           "contact': the fault of the GeoFEM paper, a split "
                           "interface whose node pairs are coupled by normal "
-                          "and tangential penalties with Coulomb friction.");
+                          "and tangential penalties with Coulomb friction; "
+                          "for the implicit Newmark and quasi-static "
+                          "schemes. 'traction at split nodes': the same "
+                          "split interface with the exact constraint of "
+                          "Day et al. (2005) and no penalty: each step the "
+                          "traction that keeps a node pair together is "
+                          "computed and limited by the friction strength; "
+                          "for the explicit central-difference scheme. The "
+                          "penalties are then not used.");
         prm.declare_entry("Plus side",
                           "plane",
                           Patterns::Selection("plane|material ids"),
@@ -109,7 +118,9 @@ namespace rupture
           prm.leave_subsection();
           return nullptr;
         }
-      auto              fault     = std::make_unique<Fault<dim>>();
+      auto fault = std::make_unique<Fault<dim>>();
+      fault->split_node_method =
+        (prm.get("Model") == "traction at split nodes");
       const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
       fault->side_by_plane        = (prm.get("Plus side") == "plane");
       fault->plane_point          = Point<dim>(Utilities::parse_vector<dim>(
@@ -460,6 +471,103 @@ namespace rupture
       force.compress(VectorOperation::add);
       if (tangent)
         tangent->compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::assemble_split_node(
+      const VectorType                &u,
+      const VectorType                &v,
+      const VectorType                &residual,
+      const VectorType                &inverse_mass,
+      const double                     dt,
+      const double                     gamma,
+      const AffineConstraints<double> &force_constraints,
+      VectorType                      &force)
+    {
+      // With the fault traction T = T_0 + dT acting on the minus node (and
+      // -T on the plus node), the accelerations of the step are
+      //   a- = (R- + A dT) / M-,   a+ = (R+ - A dT) / M+,
+      // and the displacement of the next step is u + dt (v + c dt a) with
+      // c = gamma + 1/2. The traction that keeps the pair together (no
+      // tangential slip over the next step, normal gap closed) is thus
+      //   dT = [dv / (c dt) + R+/M+ - R-/M- + (du.n) n / (c dt^2)]
+      //        / (A (1/M+ + 1/M-)),
+      // with dv = v+ - v- and du = u+ - u-.
+      const double                         c = gamma + 0.5;
+      std::vector<types::global_dof_index> dofs(2 * dim);
+      Vector<double>                       local_force(2 * dim);
+      for (auto &pair : pairs)
+        {
+          Tensor<1, dim> du, rate, acceleration, inverse_sum;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const auto m = pair.minus[d], p = pair.plus[d];
+              du[d]   = u(p) - u(m);
+              rate[d] = v(p) - v(m);
+              acceleration[d] =
+                residual(p) * inverse_mass(p) - residual(m) * inverse_mass(m);
+              inverse_sum[d] = inverse_mass(p) + inverse_mass(m);
+              dofs[d]        = m;
+              dofs[dim + d]  = p;
+            }
+          const Tensor<1, dim> &n         = pair.normal;
+          const double          gap       = du * n;
+          const Tensor<1, dim>  slip      = du - gap * n;
+          const double          increment = (slip - pair.slip).norm();
+
+          ContactResponse<dim> r;
+          r.slip_increment = increment;
+          r.plastic_slip   = slip;
+          // Components whose nodes are both held kinematically get no
+          // traction change.
+          Tensor<1, dim>       T = pair.initial_traction;
+          const Tensor<1, dim> stick =
+            rate / (c * dt) + acceleration + (gap / (c * dt * dt)) * n;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (inverse_sum[d] > 0)
+              T[d] += stick[d] / (pair.area * inverse_sum[d]);
+          const Point<3> x  = to_3d(pair.location);
+          double         dm = 0;
+          r.friction =
+            friction_law->coefficient(x, pair.state, increment, dt, dm);
+          r.friction_derivative = dm;
+          const double tn       = T * n;
+          if (tn > 0)
+            {
+              r.status = ContactStatus::open;
+              T        = 0;
+            }
+          else
+            {
+              const Tensor<1, dim> shear = T - tn * n;
+              const double         strength =
+                std::max(r.friction * (-tn) + friction_law->cohesion(x), 0.);
+              if (shear.norm() > strength)
+                {
+                  r.status = ContactStatus::slip;
+                  T        = tn * n + (strength / shear.norm()) * shear;
+                }
+              else
+                r.status = ContactStatus::stick;
+            }
+          r.traction      = T;
+          pair.trial      = r;
+          pair.trial_slip = slip;
+
+          const Tensor<1, dim> dT = T - pair.initial_traction;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              local_force(d)       = -pair.area * dT[d];
+              local_force(dim + d) = pair.area * dT[d];
+            }
+          force_constraints.distribute_local_to_global(local_force,
+                                                       dofs,
+                                                       force);
+        }
+      force.compress(VectorOperation::add);
     }
 
 

@@ -304,14 +304,35 @@ namespace rupture
         fault_output->parse_parameters(prm);
       }
     n_sides = fault ? 2 : 1;
-    AssertThrow(!(fault &&
-                  time_parameters.scheme ==
-                    TimeIntegration::Scheme::explicit_central_difference),
-                ExcMessage("<Fault/Model> = penalty contact works with the "
-                           "implicit Newmark and quasi-static schemes; the "
-                           "explicit scheme's fault (traction at split "
-                           "nodes) is not available yet. Choose <Time "
-                           "integration/Scheme> = implicit Newmark."));
+    if (fault)
+      {
+        const bool is_explicit =
+          (time_parameters.scheme ==
+           TimeIntegration::Scheme::explicit_central_difference);
+        AssertThrow(fault->uses_split_nodes() || !is_explicit,
+                    ExcMessage(
+                      "<Fault/Model> = penalty contact works with the "
+                      "implicit Newmark and quasi-static schemes, not with "
+                      "<Time integration/Scheme> = explicit central "
+                      "difference. For the explicit scheme choose <Fault/"
+                      "Model> = traction at split nodes."));
+        AssertThrow(!fault->uses_split_nodes() || is_explicit,
+                    ExcMessage(
+                      "<Fault/Model> = traction at split nodes works with "
+                      "<Time integration/Scheme> = explicit central "
+                      "difference only. For the implicit Newmark or "
+                      "quasi-static scheme choose <Fault/Model> = penalty "
+                      "contact."));
+        AssertThrow(!fault->uses_split_nodes() ||
+                      !time_parameters.loading_phase,
+                    ExcMessage(
+                      "<Fault/Model> = traction at split nodes cannot run "
+                      "the quasi-static <Time integration/Loading phase>: "
+                      "a static fault needs penalty contact. Disable the "
+                      "loading phase and give the prestress by <Fault/"
+                      "Initial traction>, or use <Fault/Model> = penalty "
+                      "contact with the implicit scheme."));
+      }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();
     AssertThrow(!(has_absorbing && time_parameters.scheme ==
@@ -755,11 +776,14 @@ namespace rupture
             if (fault)
               {
                 const Fault::Statistics f = fault->statistics();
-                pcout << "\n    Newton: " << last_newton_iterations
-                      << " iterations; fault: " << f.n_slipping << " slipping, "
-                      << f.n_open << " open nodes, max slip "
-                      << std::setprecision(3) << f.max_slip
-                      << " m, max slip rate " << f.max_slip_rate << " m/s";
+                pcout << "\n    ";
+                if (!fault->uses_split_nodes())
+                  pcout << "Newton: " << last_newton_iterations
+                        << " iterations; ";
+                pcout << "fault: " << f.n_slipping << " slipping, " << f.n_open
+                      << " open nodes, max slip " << std::setprecision(3)
+                      << f.max_slip << " m, max slip rate " << f.max_slip_rate
+                      << " m/s";
               }
             if (!test_mode)
               {

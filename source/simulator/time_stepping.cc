@@ -93,6 +93,8 @@ namespace rupture
         tmp.scale(absorbing_damping);
         y += tmp;
       }
+    // Constrained DoFs have placeholder rows in M and K.
+    hanging_constraints.set_zero(y);
   }
 
 
@@ -237,7 +239,18 @@ namespace rupture
     VectorType load(locally_owned_dofs, communicator);
     assemble_load_vector(0, load);
     contact_force = 0;
-    if (fault)
+    if (fault && fault->uses_split_nodes())
+      {
+        // The fault traction that the initial state calls for: a prestress
+        // above the strength makes the fault slip from the first step.
+        VectorType r(load), tmp(load);
+        stiffness_matrix.vmult(tmp, displacement);
+        r -= tmp;
+        compute_damping_force(velocity, tmp);
+        r -= tmp;
+        assemble_split_node_force(velocity, r, true, contact_force);
+      }
+    else if (fault)
       assemble_contact(contact_force, false, 1);
 
     if (current_scheme == TimeIntegration::Scheme::quasi_static)
@@ -264,16 +277,20 @@ namespace rupture
     // internal force K u_0 to their full value within the first step.
     applied_force = load;
     for (const auto i : locally_owned_dofs)
-      if (increment_constraints.is_constrained(i) ||
-          current_scheme == TimeIntegration::Scheme::quasi_static)
+      if (hanging_constraints.is_constrained(i))
+        applied_force(i) = 0;
+      else if (increment_constraints.is_constrained(i) ||
+               current_scheme == TimeIntegration::Scheme::quasi_static)
         applied_force(i) = ku(i) + ma(i) + damping_force(i) + contact_force(i);
     applied_force.compress(VectorOperation::insert);
 
+    hanging_constraints.set_zero(ku);
     strain_energy = 0.5 * (displacement * ku);
     VectorType mv(load);
     if (current_scheme != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(velocity, mv);
+        hanging_constraints.set_zero(mv);
         kinetic_energy = 0.5 * (velocity * mv);
       }
     external_work       = 0;
@@ -294,9 +311,13 @@ namespace rupture
     // DoFs, reactions (load minus residual) on kinematically held ones. On
     // free DoFs the residual is the error of the solve, which thus shows up
     // in the energy balance instead of being hidden.
+    // DoFs tied to others (hanging nodes, welded fault nodes) carry no
+    // force of their own: their rows of K and M hold only a placeholder
+    // diagonal, so they are left out of every energy.
     VectorType force(load);
     for (const auto i : locally_owned_dofs)
-      if (increment_constraints.is_constrained(i))
+      if (increment_constraints.is_constrained(i) &&
+          !hanging_constraints.is_constrained(i))
         force(i) = load(i) - residual(i);
     force.compress(VectorOperation::insert);
 
@@ -310,10 +331,12 @@ namespace rupture
 
     VectorType tmp(load);
     stiffness_matrix.vmult(tmp, displacement);
+    hanging_constraints.set_zero(tmp);
     strain_energy = 0.5 * (displacement * tmp);
     if (current_scheme != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(velocity, tmp);
+        hanging_constraints.set_zero(tmp);
         kinetic_energy = 0.5 * (velocity * tmp);
       }
   }
@@ -628,6 +651,13 @@ namespace rupture
         cv.add(-rayleigh_beta, tmp);
       }
     residual -= cv;
+    VectorType fault_force(displacement);
+    fault_force = 0;
+    if (fault)
+      {
+        assemble_split_node_force(velocity, residual, false, fault_force);
+        residual -= fault_force;
+      }
     acceleration = residual;
     acceleration.scale(explicit_inverse_diagonal);
     velocity.add(gamma * time_step, acceleration);
@@ -643,7 +673,51 @@ namespace rupture
     residual -= tmp;
     compute_damping_force(velocity, cv);
     residual -= cv;
+    if (fault)
+      {
+        residual -= fault_force;
+        VectorType increment(displacement);
+        increment -= old_u;
+        fault_work +=
+          0.5 * ((fault_force * increment) + (contact_force * increment));
+        contact_force = fault_force;
+        fault->commit(time_step, time);
+      }
     update_energy(old_u, load, residual, cv);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_split_node_force(const VectorType &predicted_v,
+                                            const VectorType &residual,
+                                            const bool        initial,
+                                            VectorType       &force)
+  {
+    TimerOutput::Scope t(timer, "Fault split nodes");
+    VectorType u(locally_owned_dofs, locally_relevant_dofs, communicator);
+    VectorType v(u), r(u), m(u);
+    u = displacement;
+    v = predicted_v;
+    r = residual;
+    // The initial acceleration uses the lumped mass alone (see
+    // compute_acceleration()), a step the effective diagonal.
+    if (!initial)
+      m = explicit_inverse_diagonal;
+    else
+      {
+        VectorType inverse(residual);
+        for (const auto i : locally_owned_dofs)
+          inverse(i) =
+            (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
+              1. / lumped_mass(i) :
+              0.;
+        inverse.compress(VectorOperation::insert);
+        m = inverse;
+      }
+    fault->assemble_split_node(
+      u, v, r, m, time_step, time_parameters.gamma, hanging_constraints, force);
   }
 
 

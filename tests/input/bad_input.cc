@@ -110,6 +110,15 @@ main(int argc, char **argv)
         base + fault +
           "end\nsubsection Time integration\n  set Scheme = explicit "
           "central difference\n  set Time step = 0\nend\n");
+  write("split_node_implicit.prm",
+        base + "subsection Fault\n  set Model = traction at split nodes\n"
+               "  set Plane point = 0, 500\n  set Plane normal = 0, 1\nend\n");
+  write("split_node_loading.prm",
+        base + "subsection Fault\n  set Model = traction at split nodes\n"
+               "  set Plane point = 0, 500\n  set Plane normal = 0, 1\nend\n"
+               "subsection Time integration\n  set Scheme = explicit central "
+               "difference\n  set Time step = 0\n  subsection Loading phase\n"
+               "    set Enabled = true\n  end\nend\n");
   write("fault_friction.prm",
         base + fault +
           "  subsection Linear slip weakening\n    set Static friction "
@@ -132,7 +141,11 @@ main(int argc, char **argv)
   check("function with an unknown variable", {"function.prm"});
   check("fault plane that cuts through cells", {"fault_plane.prm"});
   check("negative fault penalty", {"fault_penalty.prm"});
-  check("fault with the explicit scheme", {"fault_explicit.prm"});
+  check("penalty contact with the explicit scheme", {"fault_explicit.prm"});
+  check("traction at split nodes with the implicit scheme",
+        {"split_node_implicit.prm"});
+  check("traction at split nodes with a loading phase",
+        {"split_node_loading.prm"});
   check("mu_0 below mu_d", {"fault_friction.prm"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});

@@ -143,6 +143,40 @@ namespace rupture
                const double                     sign = 1);
 
       /**
+       * True for the traction-at-split-node method of the explicit scheme,
+       * false for penalty contact.
+       */
+      bool
+      uses_split_nodes() const
+      {
+        return split_node_method;
+      }
+
+      /**
+       * The traction-at-split-node method (Day et al. 2005) for the
+       * explicit scheme. Given the predicted displacement @p u at the end of
+       * the step, the predicted velocity @p v (v + (1 - gamma) dt a), the
+       * residual force @p residual without the fault (all with ghost
+       * entries) and the inverse of the diagonal (lumped) mass
+       * @p inverse_mass, compute for each pair the traction that keeps its
+       * two nodes together over the next step, open it under tension or
+       * limit its shear part by the friction strength, and add the fault's
+       * internal forces (as in assemble()) to @p force. With gamma = 1/2 the
+       * slip rate of the half step that follows is what the traction
+       * controls, as in central differences. The states stay trial states
+       * until commit().
+       */
+      void
+      assemble_split_node(const VectorType                &u,
+                          const VectorType                &v,
+                          const VectorType                &residual,
+                          const VectorType                &inverse_mass,
+                          const double                     dt,
+                          const double                     gamma,
+                          const AffineConstraints<double> &force_constraints,
+                          VectorType                      &force);
+
+      /**
        * Accept the trial states of the last assemble() as the new state.
        */
       void
@@ -247,7 +281,8 @@ namespace rupture
       MPI_Comm communicator;
 
       // Parameters.
-      bool                                 side_by_plane = true;
+      bool                                 split_node_method = false;
+      bool                                 side_by_plane     = true;
       Point<dim>                           plane_point;
       Tensor<1, dim>                       plane_normal;
       std::vector<types::material_id>      plus_materials;

@@ -152,6 +152,17 @@ namespace rupture
                      const bool   with_tangent,
                      const double sign);
     /**
+     * The fault forces of the traction-at-split-node method for the
+     * predicted velocity @p predicted_v and the residual @p residual of the
+     * other forces (explicit scheme); at the @p initial state with the
+     * lumped mass instead of the step's effective diagonal.
+     */
+    void
+    assemble_split_node_force(const VectorType &predicted_v,
+                              const VectorType &residual,
+                              const bool        initial,
+                              VectorType       &force);
+    /**
      * After the solve of a step: accept the fault state and update the
      * energy budget.
      */
