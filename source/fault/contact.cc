@@ -121,6 +121,56 @@ namespace rupture
 
 
 
+    template <int dim>
+    ContactResponse<dim>
+    forced_slip_response(const Tensor<1, dim> &delta,
+                         const Tensor<1, dim> &n,
+                         const Tensor<1, dim> &t0,
+                         const double          p_n,
+                         const double          p_t,
+                         const Tensor<1, dim> &old_plastic_slip,
+                         const Tensor<1, dim> &imposed_slip)
+    {
+      ContactResponse<dim> r;
+      const Tensor<2, dim> nn = outer_product(n, n);
+      const Tensor<2, dim> projector =
+        Tensor<2, dim>(unit_symmetric_tensor<dim>()) - nn;
+      const double normal_traction = t0 * n + p_n * (delta * n);
+      r.plastic_slip               = imposed_slip;
+      r.slip_increment             = (imposed_slip - old_plastic_slip).norm();
+      r.status =
+        (r.slip_increment > 0) ? ContactStatus::slip : ContactStatus::stick;
+      if (normal_traction > 0)
+        {
+          r.status   = ContactStatus::open;
+          r.traction = 0;
+          r.tangent  = 0;
+          return r;
+        }
+      r.traction = normal_traction * n + projector * t0 +
+                   p_t * (projector * delta - imposed_slip);
+      r.tangent = p_n * nn + p_t * projector;
+      return r;
+    }
+
+
+
+    template ContactResponse<2>
+    forced_slip_response(const Tensor<1, 2> &,
+                         const Tensor<1, 2> &,
+                         const Tensor<1, 2> &,
+                         const double,
+                         const double,
+                         const Tensor<1, 2> &,
+                         const Tensor<1, 2> &);
+    template ContactResponse<3>
+    forced_slip_response(const Tensor<1, 3> &,
+                         const Tensor<1, 3> &,
+                         const Tensor<1, 3> &,
+                         const double,
+                         const double,
+                         const Tensor<1, 3> &,
+                         const Tensor<1, 3> &);
     template ContactResponse<2>
     return_map(const Tensor<1, 2> &,
                const Tensor<1, 2> &,

@@ -101,6 +101,34 @@ namespace rupture
           "(, z), components separated by ';'. Empty for zero, as when the "
           "stress comes from a loading step. Used by the benchmarks, e.g. "
           "TPV3: '70e6; -120e6; 0' for a plane with normal (0, 1, 0).");
+        prm.enter_subsection("Forced slip");
+        {
+          prm.declare_entry(
+            "Region",
+            "0",
+            Patterns::Anything(),
+            "Where slip is imposed instead of computed from friction (the "
+            "paper's forced-slip trigger): a function of x, y (, z), "
+            "nonzero inside. '0' for no forced slip. Forced slip acts in "
+            "the dynamic phase only.");
+          prm.declare_entry(
+            "Slip",
+            "0",
+            Patterns::Anything(),
+            "The imposed slip (m, >= 0) as a function of x, y (, z) and t, "
+            "with t the time since the start of the dynamic phase, e.g. "
+            "'4 * min(t / 0.1, 1)' for the paper's 4 m over 0.1 s. After "
+            "the ramp the patch stays at its final slip.");
+          prm.declare_entry(
+            "Direction",
+            "",
+            Patterns::Anything(),
+            "Direction of the imposed slip (motion of the plus side "
+            "relative to the minus side), one number per dimension, e.g. "
+            "'1, 0, 0'; it is projected onto the fault plane. Needed when "
+            "<Region> is set.");
+        }
+        prm.leave_subsection();
         Friction::declare_parameters(prm);
       }
       prm.leave_subsection();
@@ -157,6 +185,18 @@ namespace rupture
                                        variables);
       fault->initial_traction = Utilities::parse_function<dim>(
         prm.get("Initial traction"), dim, "Fault/Initial traction", variables);
+      prm.enter_subsection("Forced slip");
+      fault->forced_region = Utilities::parse_function<dim>(
+        prm.get("Region"), 1, "Fault/Forced slip/Region", variables);
+      fault->forced_slip =
+        Utilities::parse_function<dim>(prm.get("Slip"),
+                                       1,
+                                       "Fault/Forced slip/Slip");
+      if (dealii::Utilities::trim(prm.get("Region")) != "0")
+        fault->forced_direction =
+          Utilities::parse_vector<dim>(prm.get("Direction"),
+                                       "Fault/Forced slip/Direction");
+      prm.leave_subsection();
       fault->friction_law = Friction::create(prm);
       prm.leave_subsection();
       return fault;
@@ -353,17 +393,32 @@ namespace rupture
                 initial_traction->value(pair.location, c);
             pair.normal_penalty     = normal_penalty->value(pair.location);
             pair.tangential_penalty = tangential_penalty->value(pair.location);
-            std::ostringstream where;
+            std::ostringstream where, values;
             where << pair.location;
-            AssertThrow(pair.normal_penalty > 0 && pair.tangential_penalty > 0,
+            values << pair.normal_penalty << " and " << pair.tangential_penalty;
+            AssertThrow(split_node_method || (pair.normal_penalty > 0 &&
+                                              pair.tangential_penalty > 0),
                         ExcMessage("<Fault/Normal penalty> and <Fault/"
                                    "Tangential penalty> must be > 0 (Pa/m), "
                                    "but are " +
-                                   std::to_string(pair.normal_penalty) +
-                                   " and " +
-                                   std::to_string(pair.tangential_penalty) +
-                                   " at (" + where.str() + ")."));
+                                   values.str() + " at (" + where.str() +
+                                   ")."));
             friction_law->initialize_state(x, pair.state);
+            if (forced_region->value(pair.location) != 0)
+              {
+                pair.forced = true;
+                pair.forced_direction =
+                  forced_direction -
+                  (forced_direction * pair.normal) * pair.normal;
+                AssertThrow(
+                  pair.forced_direction.norm() > 1e-6 * forced_direction.norm(),
+                  ExcMessage("<Fault/Forced slip/Direction> is normal to "
+                             "the fault at (" +
+                             where.str() +
+                             "): it has no component along the fault to "
+                             "slip in."));
+                pair.forced_direction /= pair.forced_direction.norm();
+              }
             pairs.push_back(pair);
           }
 
@@ -426,16 +481,25 @@ namespace rupture
               dofs[c]       = pair.minus[c];
               dofs[dim + c] = pair.plus[c];
             }
-          pair.trial      = return_map<dim>(delta,
-                                       pair.normal,
-                                       pair.initial_traction,
-                                       pair.normal_penalty,
-                                       pair.tangential_penalty,
-                                       pair.plastic_slip,
-                                       pair.state,
-                                       *friction_law,
-                                       to_3d(pair.location),
-                                       dt);
+          if (pair.forced && forced_slip_active)
+            pair.trial = forced_slip_response<dim>(delta,
+                                                   pair.normal,
+                                                   pair.initial_traction,
+                                                   pair.normal_penalty,
+                                                   pair.tangential_penalty,
+                                                   pair.plastic_slip,
+                                                   imposed_slip(pair, 0));
+          else
+            pair.trial = return_map<dim>(delta,
+                                         pair.normal,
+                                         pair.initial_traction,
+                                         pair.normal_penalty,
+                                         pair.tangential_penalty,
+                                         pair.plastic_slip,
+                                         pair.state,
+                                         *friction_law,
+                                         to_3d(pair.location),
+                                         dt);
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
 
           // Internal force of the contact: -A dT on the minus node, +A dT
@@ -523,9 +587,15 @@ namespace rupture
           r.plastic_slip   = slip;
           // Components whose nodes are both held kinematically get no
           // traction change.
-          Tensor<1, dim>       T = pair.initial_traction;
+          Tensor<1, dim> T = pair.initial_traction;
+          // A forced pair follows the imposed slip instead: its slip over
+          // the next step is the imposed one's.
+          const bool     forced = pair.forced && forced_slip_active;
+          Tensor<1, dim> target;
+          if (forced)
+            target = imposed_slip(pair, dt) - slip;
           const Tensor<1, dim> stick =
-            rate / (c * dt) + acceleration + (gap / (c * dt * dt)) * n;
+            rate / (c * dt) + acceleration + (gap * n - target) / (c * dt * dt);
           for (unsigned int d = 0; d < dim; ++d)
             if (inverse_sum[d] > 0)
               T[d] += stick[d] / (pair.area * inverse_sum[d]);
@@ -540,6 +610,9 @@ namespace rupture
               r.status = ContactStatus::open;
               T        = 0;
             }
+          else if (forced)
+            r.status =
+              (increment > 0) ? ContactStatus::slip : ContactStatus::stick;
           else
             {
               const Tensor<1, dim> shear = T - tn * n;
@@ -669,6 +742,24 @@ namespace rupture
     Fault<dim>::set_time(const double time)
     {
       friction_law->set_time(time);
+      current_time = time;
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    Fault<dim>::imposed_slip(const NodePair &pair, const double delay) const
+    {
+      const double t = current_time + delay - dynamic_start;
+      forced_slip->set_time(t);
+      const double       s = forced_slip->value(pair.location);
+      std::ostringstream message;
+      message << "<Fault/Forced slip/Slip> must be finite and >= 0 (m), but "
+              << "is " << s << " at " << pair.location << " and t = " << t
+              << " s.";
+      AssertThrow(std::isfinite(s) && s >= 0, ExcMessage(message.str()));
+      return s * pair.forced_direction;
     }
 
 
@@ -679,6 +770,8 @@ namespace rupture
     {
       friction_law->start_dynamic_phase(time);
       friction_law->enable_weakening(true);
+      dynamic_start      = time;
+      forced_slip_active = true;
       // Weakening counts the slip of the dynamic phase: a bonded zone
       // breaks when the dynamic phase starts.
       for (auto &pair : pairs)
@@ -692,6 +785,7 @@ namespace rupture
     Fault<dim>::start_loading_phase()
     {
       friction_law->enable_weakening(false);
+      forced_slip_active = false;
     }
 
 

@@ -119,6 +119,10 @@ main(int argc, char **argv)
                "subsection Time integration\n  set Scheme = explicit central "
                "difference\n  set Time step = 0\n  subsection Loading phase\n"
                "    set Enabled = true\n  end\nend\n");
+  write("forced_direction.prm",
+        base + fault +
+          "  subsection Forced slip\n    set Region = 1\n    set Slip = "
+          "t\n    set Direction = 0, 1\n  end\nend\n");
   write("fault_friction.prm",
         base + fault +
           "  subsection Linear slip weakening\n    set Static friction "
@@ -147,6 +151,7 @@ main(int argc, char **argv)
   check("traction at split nodes with a loading phase",
         {"split_node_loading.prm"});
   check("mu_0 below mu_d", {"fault_friction.prm"});
+  check("forced slip normal to the fault", {"forced_direction.prm"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

@@ -76,6 +76,23 @@ namespace rupture
                const Friction::Interface &law,
                const Point<3>            &x,
                const double               dt);
+
+    /**
+     * Penalty contact at a point whose slip is imposed (the forced-slip
+     * trigger): the normal response as in return_map(), and a tangential
+     * traction T_0,t + p_t (delta_t - @p imposed_slip) with no friction
+     * limit, which pulls the slip to the imposed value. The status is slip
+     * while the imposed slip changes.
+     */
+    template <int dim>
+    ContactResponse<dim>
+    forced_slip_response(const Tensor<1, dim> &delta,
+                         const Tensor<1, dim> &normal,
+                         const Tensor<1, dim> &initial_traction,
+                         const double          normal_penalty,
+                         const double          tangential_penalty,
+                         const Tensor<1, dim> &old_plastic_slip,
+                         const Tensor<1, dim> &imposed_slip);
   } // namespace Fault
 } // namespace rupture
 

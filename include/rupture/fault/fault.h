@@ -270,6 +270,9 @@ namespace rupture
         Tensor<1, dim>  slip;
         Tensor<1, dim>  slip_velocity;
         double          rupture_time = -1;
+        /// Slip imposed (Fault/Forced slip) instead of friction.
+        bool           forced = false;
+        Tensor<1, dim> forced_direction;
         // Trial state of the last assemble().
         ContactResponse<dim> trial;
         Tensor<1, dim>       trial_slip;
@@ -277,6 +280,11 @@ namespace rupture
 
       Point<3>
       to_3d(const Point<dim> &p) const;
+
+      /// The imposed slip vector of a forced pair at the current time plus
+      /// @p delay.
+      Tensor<1, dim>
+      imposed_slip(const NodePair &pair, const double delay) const;
 
       MPI_Comm communicator;
 
@@ -291,6 +299,13 @@ namespace rupture
       std::unique_ptr<FunctionParser<dim>> tangential_penalty;
       std::unique_ptr<FunctionParser<dim>> initial_traction;
       std::unique_ptr<Friction::Interface> friction_law;
+      std::unique_ptr<FunctionParser<dim>> forced_region;
+      std::unique_ptr<FunctionParser<dim>> forced_slip;
+      Tensor<1, dim>                       forced_direction;
+      /// Forced slip acts in the dynamic phase (from its start) only.
+      bool   forced_slip_active = true;
+      double dynamic_start      = 0;
+      double current_time       = 0;
 
       // Locally owned pairs (owned by the owner of the minus DoF of
       // component 0).
