@@ -65,7 +65,8 @@ namespace rupture
                           "0, 1, 0",
                           Patterns::Anything(),
                           "A normal vector of the fault plane, pointing to "
-                          "the plus side; one number per dimension.");
+                          "the plus side; one number per dimension. Used "
+                          "when <Plus side> = plane.");
         prm.declare_entry("Plus side material ids",
                           "",
                           Patterns::Anything(),
@@ -153,13 +154,18 @@ namespace rupture
       fault->side_by_plane        = (prm.get("Plus side") == "plane");
       fault->plane_point          = Point<dim>(Utilities::parse_vector<dim>(
         prm.get("Plane point"), "Fault/Plane point", true));
-      fault->plane_normal =
-        Utilities::parse_vector<dim>(prm.get("Plane normal"),
-                                     "Fault/Plane normal");
-      AssertThrow(fault->plane_normal.norm() > 0,
-                  ExcMessage("<Fault/Plane normal> must not be the zero "
-                             "vector."));
-      fault->plane_normal /= fault->plane_normal.norm();
+      // The plane normal matters only for a fault given by a plane.
+      fault->plane_normal[dim - 1] = 1;
+      if (fault->side_by_plane)
+        {
+          fault->plane_normal =
+            Utilities::parse_vector<dim>(prm.get("Plane normal"),
+                                         "Fault/Plane normal");
+          AssertThrow(fault->plane_normal.norm() > 0,
+                      ExcMessage("<Fault/Plane normal> must not be the zero "
+                                 "vector."));
+          fault->plane_normal /= fault->plane_normal.norm();
+        }
       for (const double id :
            Utilities::parse_doubles(prm.get("Plus side material ids"),
                                     "Fault/Plus side material ids"))
@@ -666,7 +672,8 @@ namespace rupture
               const double previous = pair.state.slip_rate;
               const double w        = (1e-3 - previous) /
                                std::max(updated.slip_rate - previous, 1e-300);
-              pair.rupture_time = time - dt + std::clamp(w, 0., 1.) * dt;
+              pair.rupture_time =
+                time - dynamic_start - dt + std::clamp(w, 0., 1.) * dt;
             }
           const Tensor<1, dim> t =
             pair.trial.traction -
@@ -692,7 +699,7 @@ namespace rupture
             r.key           = pair.minus[0];
             r.location      = pair.location;
             r.normal        = pair.normal;
-            r.slip          = pair.slip;
+            r.slip          = pair.slip - pair.slip_at_start;
             r.slip_velocity = pair.slip_velocity;
             r.traction      = pair.trial.traction;
             r.slip_path     = pair.state.slip_path;
@@ -772,6 +779,8 @@ namespace rupture
       friction_law->enable_weakening(true);
       dynamic_start      = time;
       forced_slip_active = true;
+      for (auto &pair : pairs)
+        pair.slip_at_start = pair.slip;
       // Weakening counts the slip of the dynamic phase: a bonded zone
       // breaks when the dynamic phase starts.
       for (auto &pair : pairs)
@@ -836,9 +845,10 @@ namespace rupture
             ++n_open;
           if (pair.trial.unstable_softening)
             ++unstable;
-          max_slip = std::max(max_slip, pair.slip.norm());
-          max_rate = std::max(max_rate, pair.state.slip_rate);
-          moment += pair.shear_modulus * pair.area * pair.slip.norm();
+          const double slip = (pair.slip - pair.slip_at_start).norm();
+          max_slip          = std::max(max_slip, slip);
+          max_rate          = std::max(max_rate, pair.state.slip_rate);
+          moment += pair.shear_modulus * pair.area * slip;
           const double tn = pair.trial.traction * pair.normal;
           normal += pair.area * tn;
           shear += pair.area * (pair.trial.traction - tn * pair.normal).norm();

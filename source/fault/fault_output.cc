@@ -247,6 +247,16 @@ namespace rupture
 
     template <int dim>
     void
+    FaultOutput<dim>::start_dynamic_phase()
+    {
+      for (auto &s : stations)
+        s.rows.clear();
+    }
+
+
+
+    template <int dim>
+    void
     FaultOutput<dim>::record(const Fault<dim> &fault, const double time)
     {
       if (stations.empty())

@@ -662,8 +662,13 @@ namespace rupture
         prepare_phase(current_scheme,
                       time_parameters.time_step,
                       time_parameters.end_time);
+        dynamic_start = start;
         if (fault)
-          fault->start_dynamic_phase(start);
+          {
+            fault->start_dynamic_phase(start);
+            fault_output->start_dynamic_phase();
+            fault_output->record(*fault, 0);
+          }
         if (current_scheme != TimeIntegration::Scheme::quasi_static)
           {
             velocity = 0;
@@ -747,6 +752,14 @@ namespace rupture
       {
         ++step;
         time = (i == n_steps) ? end_time : start + i * time_step;
+        // The time since the start of the dynamic phase, without the
+        // round-off of the absolute time after a long loading phase.
+        const double phase_time =
+          (start - dynamic_start) +
+          ((i == n_steps && std::abs(end_time - start - n_steps * time_step) >
+                              1e-6 * time_step) ?
+             end_time - start :
+             i * time_step);
         if (fault)
           fault->set_time(time);
 
@@ -765,14 +778,17 @@ namespace rupture
         check_finite(displacement, "displacement");
         statistics.add_row(statistics_row());
         if (fault)
-          fault_output->record(*fault, time);
+          fault_output->record(*fault, phase_time);
 
         const bool stop = stop_when_weakening && fault->n_weakening() > 0;
         if (step % screen_interval == 0 || i == n_steps || stop)
           {
             pcout << "*** Step " << step << ": t = " << std::scientific
-                  << std::setprecision(4) << time
-                  << " s, dt = " << std::setprecision(2) << time_step << " s";
+                  << std::setprecision(4) << time;
+            pcout << " s";
+            if (dynamic_start != 0)
+              pcout << " (dynamic phase t = " << phase_time << " s)";
+            pcout << ", dt = " << std::setprecision(2) << time_step << " s";
             if (fault)
               {
                 const Fault::Statistics f = fault->statistics();

@@ -72,7 +72,8 @@ namespace rupture
         types::global_dof_index key = 0;
         Point<dim>              location;
         Tensor<1, dim>          normal;
-        /// Relative displacement u+ - u-, tangential part (m).
+        /// Relative displacement u+ - u-, tangential part (m), since the
+        /// start of the dynamic phase.
         Tensor<1, dim> slip;
         /// Its rate over the last step (m/s).
         Tensor<1, dim> slip_velocity;
@@ -217,7 +218,8 @@ namespace rupture
       set_time(const double time);
 
       /**
-       * Tell the friction law that the dynamic phase starts now.
+       * Tell the friction law that the dynamic phase starts now. Slip,
+       * seismic moment and rupture times are counted from here on.
        */
       void
       start_dynamic_phase(const double time);
@@ -270,6 +272,9 @@ namespace rupture
         Tensor<1, dim>  slip;
         Tensor<1, dim>  slip_velocity;
         double          rupture_time = -1;
+        /// Slip at the start of the dynamic phase: output and statistics
+        /// count the slip from there (coseismic slip).
+        Tensor<1, dim> slip_at_start;
         /// Slip imposed (Fault/Forced slip) instead of friction.
         bool           forced = false;
         Tensor<1, dim> forced_direction;

@@ -53,6 +53,13 @@ namespace rupture
       record(const Fault<dim> &fault, const double time);
 
       /**
+       * The dynamic phase starts (after a loading phase): the station time
+       * series start anew, with its time as their time 0.
+       */
+      void
+      start_dynamic_phase();
+
+      /**
        * Write the fault surface for ParaView.
        */
       void

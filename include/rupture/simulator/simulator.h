@@ -262,7 +262,10 @@ namespace rupture
     bool                             has_absorbing;
 
     // State.
-    double       time;
+    double time;
+    /// Start of the dynamic phase (0 without a loading phase): the time 0
+    /// of station files and rupture times.
+    double       dynamic_start = 0;
     double       time_step;
     double       stable_time_step;
     unsigned int step;
