@@ -110,9 +110,10 @@ namespace rupture
 
           local_elasticity_matrices(
             fe_values, u, m, k, need_mass ? &mass : nullptr);
-          hanging_constraints.distribute_local_to_global(k,
-                                                         dofs,
-                                                         stiffness_matrix);
+          if (!stiffness_cell_by_cell)
+            hanging_constraints.distribute_local_to_global(k,
+                                                           dofs,
+                                                           stiffness_matrix);
           if (need_mass)
             hanging_constraints.distribute_local_to_global(mass,
                                                            dofs,
@@ -193,7 +194,8 @@ namespace rupture
                                                          constant_load);
         }
 
-    stiffness_matrix.compress(VectorOperation::add);
+    if (!stiffness_cell_by_cell)
+      stiffness_matrix.compress(VectorOperation::add);
     if (need_mass)
       mass_matrix.compress(VectorOperation::add);
     constant_load.compress(VectorOperation::add);
@@ -479,6 +481,51 @@ namespace rupture
             }
         }
     return std::sqrt(dealii::Utilities::MPI::sum(error, communicator));
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_stiffness(const VectorType &x, VectorType &y) const
+  {
+    if (!stiffness_cell_by_cell)
+      {
+        stiffness_matrix.vmult(y, x);
+        return;
+      }
+    TimerOutput::Scope t(timer, "Stiffness product cell by cell");
+    VectorType x_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
+    x_ghost = x;
+    y       = 0;
+    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>                    hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_gradients |
+                                  update_JxW_values);
+    FullMatrix<double>                   k;
+    Vector<double>                       local_x, local_y;
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &m = materials.get(cell->material_id());
+          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+          hp_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+          const unsigned int   n         = fe_values.dofs_per_cell;
+          k.reinit(n, n);
+          local_x.reinit(n);
+          local_y.reinit(n);
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
+          local_elasticity_matrices<dim>(fe_values, u, m, k, nullptr);
+          for (unsigned int i = 0; i < n; ++i)
+            local_x(i) = x_ghost(dofs[i]);
+          k.vmult(local_y, local_x);
+          hanging_constraints.distribute_local_to_global(local_y, dofs, y);
+        }
+    y.compress(VectorOperation::add);
   }
 
 

@@ -53,6 +53,17 @@ namespace rupture
                         Patterns::Integer(1, 2),
                         "Degree of the FE_Q displacement elements: 1 "
                         "(trilinear, the paper's) or 2.");
+      prm.declare_entry(
+        "Stiffness operator",
+        "matrix",
+        Patterns::Selection("matrix|cell by cell"),
+        "How products with the stiffness matrix K (residuals, energies) are "
+        "formed: 'matrix' stores K (about 1 KB per DoF for trilinear "
+        "elements in 3-D); 'cell by cell' recomputes the element "
+        "stiffness at each product and stores no K, which halves the "
+        "memory of implicit and quasi-static runs (the solver's system "
+        "matrix stays) at the cost of an assembly per product. For very "
+        "large models such as northeast-japan-full.prm.");
       prm.declare_entry("Mass matrix",
                         "consistent",
                         Patterns::Selection("consistent|lumped"),
@@ -239,9 +250,10 @@ namespace rupture
     test_mode        = prm.get_bool("Test mode");
 
     prm.enter_subsection("Discretization");
-    n_global_refinements = prm.get_integer("Initial global refinement");
-    fe_degree            = prm.get_integer("Polynomial degree");
-    use_lumped_mass      = (prm.get("Mass matrix") == "lumped");
+    n_global_refinements   = prm.get_integer("Initial global refinement");
+    fe_degree              = prm.get_integer("Polynomial degree");
+    use_lumped_mass        = (prm.get("Mass matrix") == "lumped");
+    stiffness_cell_by_cell = (prm.get("Stiffness operator") == "cell by cell");
     prm.leave_subsection();
 
     prm.enter_subsection("Damping");
@@ -477,10 +489,13 @@ namespace rupture
     const Scheme scheme = time_parameters.scheme;
     // A scene pays only for what it uses: no mass matrix without inertia or
     // with lumping, no system matrix (hence no solver) in explicit runs.
-    stiffness_matrix.reinit(locally_owned_dofs,
-                            locally_owned_dofs,
-                            dsp,
-                            communicator);
+    if (stiffness_cell_by_cell)
+      stiffness_matrix.clear();
+    else
+      stiffness_matrix.reinit(locally_owned_dofs,
+                              locally_owned_dofs,
+                              dsp,
+                              communicator);
     if (scheme == Scheme::implicit_newmark && !use_lumped_mass)
       mass_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,

@@ -84,7 +84,7 @@ namespace rupture
       }
     if (rayleigh_beta != 0)
       {
-        stiffness_matrix.vmult(tmp, v);
+        apply_stiffness(v, tmp);
         y.add(rayleigh_beta, tmp);
       }
     if (has_absorbing)
@@ -164,7 +164,7 @@ namespace rupture
   {
     // M a_0 = f - K u_0 - C v_0 on the free DoFs.
     VectorType r(load), tmp(load);
-    stiffness_matrix.vmult(tmp, displacement);
+    apply_stiffness(displacement, tmp);
     r -= tmp;
     compute_damping_force(velocity, tmp);
     r -= tmp;
@@ -244,7 +244,7 @@ namespace rupture
         // The fault traction that the initial state calls for: a prestress
         // above the strength makes the fault slip from the first step.
         VectorType r(load), tmp(load);
-        stiffness_matrix.vmult(tmp, displacement);
+        apply_stiffness(displacement, tmp);
         r -= tmp;
         compute_damping_force(velocity, tmp);
         r -= tmp;
@@ -266,7 +266,7 @@ namespace rupture
 
     // Forces and energies of the initial state.
     VectorType ku(load);
-    stiffness_matrix.vmult(ku, displacement);
+    apply_stiffness(displacement, ku);
     compute_damping_force(velocity, damping_force);
     VectorType ma(load);
     ma = 0;
@@ -330,7 +330,7 @@ namespace rupture
     damping_force = new_damping_force;
 
     VectorType tmp(load);
-    stiffness_matrix.vmult(tmp, displacement);
+    apply_stiffness(displacement, tmp);
     hanging_constraints.set_zero(tmp);
     strain_energy = 0.5 * (displacement * tmp);
     if (current_scheme != TimeIntegration::Scheme::quasi_static)
@@ -404,7 +404,7 @@ namespace rupture
               {
                 // The force scale of the step: the residual may start tiny
                 // (a body near equilibrium), so the internal forces count.
-                stiffness_matrix.vmult(scratch, old_u);
+                apply_stiffness(old_u, scratch);
                 increment_constraints.set_zero(scratch);
                 reference = std::max({norm, scratch.l2_norm(), 1e-300});
               }
@@ -590,7 +590,7 @@ namespace rupture
     };
     const auto compute_residual = [&]() {
       residual = load;
-      stiffness_matrix.vmult(tmp, displacement);
+      apply_stiffness(displacement, tmp);
       residual -= tmp;
       apply_mass(acceleration, tmp);
       residual -= tmp;
@@ -639,7 +639,7 @@ namespace rupture
     //   - alpha M v~ - C_abs v~; the stiffness damping uses the predictor.
     VectorType kw(displacement);
     kw.add(rayleigh_beta, velocity);
-    stiffness_matrix.vmult(tmp, kw);
+    apply_stiffness(kw, tmp);
     kw       = tmp;
     residual = load;
     residual -= kw;
@@ -647,7 +647,7 @@ namespace rupture
     if (rayleigh_beta != 0)
       {
         // cv holds beta K v~ too, which is already in kw.
-        stiffness_matrix.vmult(tmp, velocity);
+        apply_stiffness(velocity, tmp);
         cv.add(-rayleigh_beta, tmp);
       }
     residual -= cv;
@@ -667,7 +667,7 @@ namespace rupture
 
     // Residual of the new state, for the reactions in the energy budget.
     residual = load;
-    stiffness_matrix.vmult(tmp, displacement);
+    apply_stiffness(displacement, tmp);
     residual -= tmp;
     apply_mass(acceleration, tmp);
     residual -= tmp;
@@ -734,7 +734,7 @@ namespace rupture
 
     const auto compute_residual = [&]() {
       residual = load;
-      stiffness_matrix.vmult(tmp, displacement);
+      apply_stiffness(displacement, tmp);
       residual -= tmp;
       if (fault)
         {

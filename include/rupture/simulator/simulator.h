@@ -173,6 +173,9 @@ namespace rupture
                 const VectorType &new_damping_force);
     void
     apply_mass(const VectorType &x, VectorType &y) const;
+    /// y = K x, with the stored matrix or cell by cell.
+    void
+    apply_stiffness(const VectorType &x, VectorType &y) const;
     void
     compute_damping_force(const VectorType &velocity, VectorType &y) const;
     void
@@ -204,6 +207,7 @@ namespace rupture
     unsigned int                n_global_refinements;
     unsigned int                fe_degree;
     bool                        use_lumped_mass;
+    bool                        stiffness_cell_by_cell = false;
     double                      rayleigh_alpha;
     double                      rayleigh_beta;
     double                      gravity;
