@@ -1,3 +1,4 @@
+#include <rupture/base/registry.h>
 #include <rupture/friction/interface.h>
 
 namespace rupture
@@ -60,18 +61,12 @@ namespace rupture
 
     namespace
     {
-      struct Entry
-      {
-        std::string                                 name;
-        std::string                                 description;
-        std::function<void(ParameterHandler &)>     declare;
-        std::function<std::unique_ptr<Interface>()> create;
-      };
+      using Factory = std::function<std::unique_ptr<Interface>()>;
 
-      std::vector<Entry> &
+      Utilities::Registry<Factory> &
       registry()
       {
-        static std::vector<Entry> entries;
+        static Utilities::Registry<Factory> entries;
         return entries;
       }
     } // namespace
@@ -84,8 +79,7 @@ namespace rupture
                  const std::function<void(ParameterHandler &)>     &declare,
                  const std::function<std::unique_ptr<Interface>()> &create)
     {
-      registry().push_back({name, description, declare, create});
-      return true;
+      return registry().add({name, description, declare, create});
     }
 
 
@@ -93,19 +87,12 @@ namespace rupture
     void
     declare_parameters(ParameterHandler &prm)
     {
-      std::string names, descriptions;
-      for (const auto &e : registry())
-        {
-          names += (names.empty() ? "" : "|") + e.name;
-          descriptions += "\n'" + e.name + "': " + e.description;
-        }
       prm.declare_entry("Friction law",
-                        registry().empty() ? "" : registry().front().name,
-                        Patterns::Selection(names),
+                        registry().first_name(),
+                        Patterns::Selection(registry().selection()),
                         "The friction law of the fault. Available laws:" +
-                          descriptions);
-      for (const auto &e : registry())
-        e.declare(prm);
+                          registry().descriptions());
+      registry().declare_all(prm);
     }
 
 
@@ -114,17 +101,9 @@ namespace rupture
     create(ParameterHandler &prm)
     {
       const std::string name = prm.get("Friction law");
-      for (const auto &e : registry())
-        if (e.name == name)
-          {
-            auto law = e.create();
-            law->parse_parameters(prm);
-            return law;
-          }
-      AssertThrow(false,
-                  ExcMessage("Unknown friction law <" + name +
-                             "> in <Fault/Friction law>."));
-      return nullptr;
+      auto law = registry().find(name, "Fault/Friction law").create();
+      law->parse_parameters(prm);
+      return law;
     }
   } // namespace Friction
 } // namespace rupture

@@ -1,3 +1,4 @@
+#include <rupture/base/registry.h>
 #include <rupture/base/utilities.h>
 #include <rupture/scene/scene.h>
 
@@ -9,32 +10,29 @@ namespace rupture
   {
     namespace
     {
-      struct Entry
+      struct Factories
       {
-        std::string                                    name;
-        std::string                                    description;
-        std::function<void(ParameterHandler &)>        declare;
         std::function<std::unique_ptr<Interface<2>>()> create_2d;
         std::function<std::unique_ptr<Interface<3>>()> create_3d;
       };
 
-      std::vector<Entry> &
+      Utilities::Registry<Factories> &
       registry()
       {
-        static std::vector<Entry> entries;
+        static Utilities::Registry<Factories> entries;
         return entries;
       }
 
       std::unique_ptr<Interface<2>>
-      make(const Entry &e, std::integral_constant<int, 2>)
+      make(const Factories &f, std::integral_constant<int, 2>)
       {
-        return e.create_2d();
+        return f.create_2d();
       }
 
       std::unique_ptr<Interface<3>>
-      make(const Entry &e, std::integral_constant<int, 3>)
+      make(const Factories &f, std::integral_constant<int, 3>)
       {
-        return e.create_3d();
+        return f.create_3d();
       }
     } // namespace
 
@@ -48,8 +46,8 @@ namespace rupture
       const std::function<std::unique_ptr<Interface<2>>()> &create_2d,
       const std::function<std::unique_ptr<Interface<3>>()> &create_3d)
     {
-      registry().push_back({name, description, declare, create_2d, create_3d});
-      return true;
+      return registry().add(
+        {name, description, declare, {create_2d, create_3d}});
     }
 
 
@@ -57,22 +55,15 @@ namespace rupture
     void
     declare_parameters(ParameterHandler &prm)
     {
-      std::string names, descriptions;
-      for (const auto &e : registry())
-        {
-          names += (names.empty() ? "" : "|") + e.name;
-          descriptions += "\n'" + e.name + "': " + e.description;
-        }
       prm.enter_subsection("Scene");
       prm.declare_entry("Model",
                         "box",
-                        Patterns::Selection(names),
+                        Patterns::Selection(registry().selection()),
                         "The geometry with its material ids and named "
                         "boundaries. Available scenes:" +
-                          descriptions);
+                          registry().descriptions());
       prm.leave_subsection();
-      for (const auto &e : registry())
-        e.declare(prm);
+      registry().declare_all(prm);
     }
 
 
@@ -84,16 +75,10 @@ namespace rupture
       prm.enter_subsection("Scene");
       const std::string name = prm.get("Model");
       prm.leave_subsection();
-      for (const auto &e : registry())
-        if (e.name == name)
-          {
-            auto scene = make(e, std::integral_constant<int, dim>());
-            scene->parse_parameters(prm);
-            return scene;
-          }
-      AssertThrow(false,
-                  ExcMessage("Unknown scene <" + name + "> in <Scene/Model>."));
-      return nullptr;
+      auto scene = make(registry().find(name, "Scene/Model").create,
+                        std::integral_constant<int, dim>());
+      scene->parse_parameters(prm);
+      return scene;
     }
 
 
