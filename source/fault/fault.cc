@@ -476,7 +476,6 @@ namespace rupture
                          const double                     sign)
     {
       std::vector<types::global_dof_index> dofs(2 * dim);
-      Vector<double>                       local_force(2 * dim);
       FullMatrix<double>                   local_tangent(2 * dim, 2 * dim);
       for (auto &pair : pairs)
         {
@@ -508,18 +507,7 @@ namespace rupture
                                          dt);
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
 
-          // Internal force of the contact: -A dT on the minus node, +A dT
-          // on the plus node, with dT the traction change carried by the
-          // displacement.
-          const Tensor<1, dim> dT = pair.trial.traction - pair.initial_traction;
-          for (unsigned int c = 0; c < dim; ++c)
-            {
-              local_force(c)       = -pair.area * dT[c];
-              local_force(dim + c) = pair.area * dT[c];
-            }
-          force_constraints.distribute_local_to_global(local_force,
-                                                       dofs,
-                                                       force);
+          add_internal_force(pair, force_constraints, force);
 
           if (tangent)
             {
@@ -566,9 +554,7 @@ namespace rupture
       //   dT = [dv / (c dt) + R+/M+ - R-/M- + (du.n) n / (c dt^2)]
       //        / (A (1/M+ + 1/M-)),
       // with dv = v+ - v- and du = u+ - u-.
-      const double                         c = gamma + 0.5;
-      std::vector<types::global_dof_index> dofs(2 * dim);
-      Vector<double>                       local_force(2 * dim);
+      const double c = gamma + 0.5;
       for (auto &pair : pairs)
         {
           Tensor<1, dim> du, rate, acceleration, inverse_sum;
@@ -580,8 +566,6 @@ namespace rupture
               acceleration[d] =
                 residual(p) * inverse_mass(p) - residual(m) * inverse_mass(m);
               inverse_sum[d] = inverse_mass(p) + inverse_mass(m);
-              dofs[d]        = m;
-              dofs[dim + d]  = p;
             }
           const Tensor<1, dim> &n         = pair.normal;
           const double          gap       = du * n;
@@ -636,17 +620,32 @@ namespace rupture
           pair.trial      = r;
           pair.trial_slip = slip;
 
-          const Tensor<1, dim> dT = T - pair.initial_traction;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              local_force(d)       = -pair.area * dT[d];
-              local_force(dim + d) = pair.area * dT[d];
-            }
-          force_constraints.distribute_local_to_global(local_force,
-                                                       dofs,
-                                                       force);
+          add_internal_force(pair, force_constraints, force);
         }
       force.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::add_internal_force(const NodePair                  &pair,
+                                   const AffineConstraints<double> &constraints,
+                                   VectorType                      &force) const
+    {
+      // Internal force of the fault: -A dT on the minus node, +A dT on the
+      // plus node, with dT the traction change carried by the displacement.
+      std::vector<types::global_dof_index> dofs(2 * dim);
+      Vector<double>                       local_force(2 * dim);
+      const Tensor<1, dim> dT = pair.trial.traction - pair.initial_traction;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          dofs[d]              = pair.minus[d];
+          dofs[dim + d]        = pair.plus[d];
+          local_force(d)       = -pair.area * dT[d];
+          local_force(dim + d) = pair.area * dT[d];
+        }
+      constraints.distribute_local_to_global(local_force, dofs, force);
     }
 
 

@@ -295,40 +295,18 @@ namespace rupture
                                          const double absorbing_factor)
   {
     TimerOutput::Scope t(timer, "Assemble system matrix");
-    system_matrix = 0;
-    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>                    hp_values(fe_collection,
-                                q_cells,
-                                update_values | update_gradients |
-                                  update_JxW_values);
-    FullMatrix<double>                   k, mass;
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto &m = materials.get(cell->material_id());
-          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
-          hp_values.reinit(cell);
-          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
-          const unsigned int   n         = fe_values.dofs_per_cell;
-          k.reinit(n, n);
-          mass.reinit(n, n);
-          dofs.resize(n);
-          cell->get_dof_indices(dofs);
-          local_elasticity_matrices(fe_values,
-                                    u,
-                                    m,
-                                    k,
-                                    (mass_factor != 0 && !use_lumped_mass) ?
-                                      &mass :
-                                      nullptr);
-          k *= stiffness_factor;
-          if (mass_factor != 0 && !use_lumped_mass)
-            k.add(mass_factor, mass);
-          increment_constraints.distribute_local_to_global(k,
-                                                           dofs,
-                                                           system_matrix);
-        }
+    system_matrix        = 0;
+    const bool with_mass = (mass_factor != 0 && !use_lumped_mass);
+    for_each_cell_matrix(with_mass,
+                         [&](const std::vector<types::global_dof_index> &dofs,
+                             FullMatrix<double>                         &k,
+                             const FullMatrix<double>                   &mass) {
+                           k *= stiffness_factor;
+                           if (with_mass)
+                             k.add(mass_factor, mass);
+                           increment_constraints.distribute_local_to_global(
+                             k, dofs, system_matrix);
+                         });
     system_matrix.compress(VectorOperation::add);
 
     // Diagonal parts: lumped mass and absorbing dashpots.
@@ -498,34 +476,57 @@ namespace rupture
     VectorType x_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
     x_ghost = x;
     y       = 0;
+    Vector<double> local_x, local_y;
+    for_each_cell_matrix(false,
+                         [&](const std::vector<types::global_dof_index> &dofs,
+                             FullMatrix<double>                         &k,
+                             const FullMatrix<double> &) {
+                           local_x.reinit(dofs.size());
+                           local_y.reinit(dofs.size());
+                           for (unsigned int i = 0; i < dofs.size(); ++i)
+                             local_x(i) = x_ghost(dofs[i]);
+                           k.vmult(local_y, local_x);
+                           hanging_constraints.distribute_local_to_global(
+                             local_y, dofs, y);
+                         });
+    y.compress(VectorOperation::add);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::for_each_cell_matrix(
+    const bool                                             with_mass,
+    const std::function<void(const std::vector<types::global_dof_index> &,
+                             FullMatrix<double> &,
+                             const FullMatrix<double> &)> &action) const
+  {
     const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
     hp::FEValues<dim>                    hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);
-    FullMatrix<double>                   k;
-    Vector<double>                       local_x, local_y;
+    FullMatrix<double>                   k, mass;
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto &m = materials.get(cell->material_id());
           const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
           hp_values.reinit(cell);
           const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
           const unsigned int   n         = fe_values.dofs_per_cell;
           k.reinit(n, n);
-          local_x.reinit(n);
-          local_y.reinit(n);
+          mass.reinit(with_mass ? n : 0, with_mass ? n : 0);
           dofs.resize(n);
           cell->get_dof_indices(dofs);
-          local_elasticity_matrices<dim>(fe_values, u, m, k, nullptr);
-          for (unsigned int i = 0; i < n; ++i)
-            local_x(i) = x_ghost(dofs[i]);
-          k.vmult(local_y, local_x);
-          hanging_constraints.distribute_local_to_global(local_y, dofs, y);
+          local_elasticity_matrices<dim>(fe_values,
+                                         u,
+                                         materials.get(cell->material_id()),
+                                         k,
+                                         with_mass ? &mass : nullptr);
+          action(dofs, k, mass);
         }
-    y.compress(VectorOperation::add);
   }
 
 

@@ -286,6 +286,12 @@ namespace rupture
       Point<3>
       to_3d(const Point<dim> &p) const;
 
+      /// Add the internal force of the trial traction of @p pair.
+      void
+      add_internal_force(const NodePair                  &pair,
+                         const AffineConstraints<double> &constraints,
+                         VectorType                      &force) const;
+
       /// The imposed slip vector of a forced pair at the current time plus
       /// @p delay.
       Tensor<1, dim>

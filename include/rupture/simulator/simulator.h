@@ -21,6 +21,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/hp/fe_collection.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -176,6 +177,14 @@ namespace rupture
     /// y = K x, with the stored matrix or cell by cell.
     void
     apply_stiffness(const VectorType &x, VectorType &y) const;
+    /// Call @p action with the DoF indices, the stiffness matrix and (if
+    /// @p with_mass) the consistent mass matrix of each locally owned cell.
+    void
+    for_each_cell_matrix(
+      const bool                                             with_mass,
+      const std::function<void(const std::vector<types::global_dof_index> &,
+                               FullMatrix<double> &,
+                               const FullMatrix<double> &)> &action) const;
     void
     compute_damping_force(const VectorType &velocity, VectorType &y) const;
     void
