@@ -31,8 +31,10 @@ namespace rupture
 
       /**
        * Build the AMG hierarchy for @p matrix. @p rigid_body_modes holds
-       * dim (dim+1)/2 vectors over the locally owned DoFs. @p symmetric
-       * selects CG under the 'automatic' choice.
+       * dim (dim+1)/2 vectors over the locally owned DoFs, from which the
+       * dimension follows: the dim DoFs of each node (numbered together)
+       * are aggregated as one block. @p symmetric selects CG under the
+       * 'automatic' choice.
        */
       void
       initialize(const TrilinosWrappers::SparseMatrix   &matrix,
