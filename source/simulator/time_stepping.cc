@@ -7,8 +7,10 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace rupture
@@ -143,16 +145,68 @@ namespace rupture
     const double norm = v.l2_norm();
     if (std::isfinite(norm))
       return;
+
+    // Where: the support point of the entry that is not finite, or, if
+    // only the norm overflowed, of the largest one; over all ranks.
+    Point<dim>   where;
+    unsigned int where_component = 0;
+    double       worst           = -1;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto                          &fe = cell->get_fe();
+          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (locally_owned_dofs.is_element(dofs[i]))
+              {
+                const double value = v(dofs[i]);
+                const double size  = std::isfinite(value) ?
+                                       std::abs(value) :
+                                       std::numeric_limits<double>::max();
+                if (size > worst)
+                  {
+                    worst = size;
+                    where = MappingQ1<dim>().transform_unit_to_real_cell(
+                      cell, fe.unit_support_point(i));
+                    where_component =
+                      fe.system_to_component_index(i).first % dim;
+                  }
+              }
+        }
+    const auto global_worst = dealii::Utilities::MPI::max(worst, communicator);
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int owner =
+      dealii::Utilities::MPI::min(worst == global_worst ?
+                                    rank :
+                                    dealii::numbers::invalid_unsigned_int,
+                                  communicator);
+    std::array<double, dim + 1> data;
+    for (unsigned int d = 0; d < dim; ++d)
+      data[d] = where[d];
+    data[dim] = where_component;
+    MPI_Bcast(data.data(), dim + 1, MPI_DOUBLE, owner, communicator);
+
     std::ostringstream message;
     message << "At step " << step << " (t = " << time << " s) the " << what
-            << " is no longer finite, and the run was stopped before "
-               "writing it. ";
+            << " is no longer finite, largest in component "
+            << static_cast<int>(data[dim]) << " at (";
+    for (unsigned int d = 0; d < dim; ++d)
+      message << (d > 0 ? ", " : "") << data[d];
+    message << ") m; the run was stopped before writing it. ";
     if (current_scheme == TimeIntegration::Scheme::explicit_central_difference)
       message << "The explicit scheme blew up: its time step " << time_step
               << " s against the stable limit " << stable_time_step
               << " s. Reduce <Time integration/Time step>.";
+    else if (fault)
+      message << "Likely causes: fault penalties far above the stiffness "
+                 "of the elements next to the fault, slip weakening steeper "
+                 "than <Fault/Tangential penalty>, or extreme loads or "
+                 "material constants. Lower the penalties or the time step.";
     else
-      message << "Check the loads and material constants for extreme values.";
+      message << "Likely cause: extreme loads or material constants. Check "
+                 "them.";
     AssertThrow(false, ExcMessage(message.str()));
   }
 

@@ -22,6 +22,15 @@ namespace rupture
                           "positive definite systems and GMRES otherwise. "
                           "'direct' factorises the matrix (Trilinos Amesos "
                           "KLU): robust, but only for small problems.");
+        prm.declare_entry(
+          "AMG aggregation",
+          "uncoupled",
+          Patterns::Selection("uncoupled|MIS"),
+          "How ML's algebraic multigrid groups nodes into coarse nodes: "
+          "'uncoupled' (ML's default, per process) or 'MIS' (maximal "
+          "independent sets), which takes another code path in ML and is "
+          "used for the full Northeast-Japan model, whose serial "
+          "'uncoupled' set-up crashes inside ML.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
                           Patterns::Double(0, 1),
@@ -42,6 +51,7 @@ namespace rupture
     {
       prm.enter_subsection("Solver");
       solver_type        = prm.get("Linear solver");
+      aggregation        = prm.get("AMG aggregation");
       relative_tolerance = prm.get_double("Linear solver tolerance");
       max_iterations     = prm.get_integer("Maximum linear iterations");
       prm.leave_subsection();
@@ -92,6 +102,8 @@ namespace rupture
       const int n_components = (rigid_body_modes.size() == 6) ? 3 : 2;
       AssertThrow(map.NumMyElements() % n_components == 0, ExcInternalError());
       parameters.set("PDE equations", n_components);
+      parameters.set("aggregation: type",
+                     aggregation == "MIS" ? "MIS" : "Uncoupled");
 
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
       amg->initialize(matrix, parameters);

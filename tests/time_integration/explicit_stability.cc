@@ -2,7 +2,7 @@
 // (Irons' element bound, a safe lower bound of the true limit) and blows up
 // above it: at 0.95 times the stable step the energy stays bounded; at 1.5
 // and 2 times the run stops with a message that the solution is no longer
-// finite, before writing it.
+// finite, before writing it, naming the step and the place.
 
 #include <deal.II/base/mpi.h>
 
@@ -42,6 +42,11 @@ main(int argc, char **argv)
          errors.find("stable limit") != std::string::npos) ?
           "yes" :
           "no");
+      std::printf("  names the step and the place: %s\n",
+                  (errors.find("At step ") != std::string::npos &&
+                   errors.find("largest in component") != std::string::npos) ?
+                    "yes" :
+                    "no");
       if (code == 0)
         {
           const auto rows = tests::read_statistics("output-blow-up/statistics");

@@ -58,10 +58,11 @@ namespace rupture
       }
 
     private:
-      std::string                                        solver_type;
-      double                                             relative_tolerance;
-      unsigned int                                       max_iterations;
-      bool                                               use_cg = true;
+      std::string  solver_type;
+      std::string  aggregation = "uncoupled";
+      double       relative_tolerance;
+      unsigned int max_iterations;
+      bool         use_cg = true;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
     };
   } // namespace Solver
