@@ -28,9 +28,8 @@ namespace rupture
           Patterns::Selection("uncoupled|MIS"),
           "How ML's algebraic multigrid groups nodes into coarse nodes: "
           "'uncoupled' (ML's default, per process) or 'MIS' (maximal "
-          "independent sets), which takes another code path in ML and is "
-          "used for the full Northeast-Japan model, whose serial "
-          "'uncoupled' set-up crashes inside ML.");
+          "independent sets), another code path in ML that needs more "
+          "memory.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
                           Patterns::Double(0, 1),
