@@ -359,7 +359,8 @@ namespace rupture
   Simulator<dim>::update_energy(const VectorType &old_displacement,
                                 const VectorType &load,
                                 const VectorType &residual,
-                                const VectorType &new_damping_force)
+                                const VectorType &new_damping_force,
+                                const VectorType *stiffness_force)
   {
     // Work of the applied forces by the trapezoidal rule: loads on free
     // DoFs, reactions (load minus residual) on kinematically held ones. On
@@ -384,7 +385,10 @@ namespace rupture
     damping_force = new_damping_force;
 
     VectorType tmp(load);
-    apply_stiffness(displacement, tmp);
+    if (stiffness_force)
+      tmp = *stiffness_force;
+    else
+      apply_stiffness(displacement, tmp);
     hanging_constraints.set_zero(tmp);
     strain_energy = 0.5 * (displacement * tmp);
     if (current_scheme != TimeIntegration::Scheme::quasi_static)
@@ -720,9 +724,14 @@ namespace rupture
     check_finite(displacement, "displacement");
 
     // Residual of the new state, for the reactions in the energy budget.
+    // Without stiffness damping K u is already known.
+    VectorType ku(displacement);
+    if (rayleigh_beta == 0)
+      ku = kw;
+    else
+      apply_stiffness(displacement, ku);
     residual = load;
-    apply_stiffness(displacement, tmp);
-    residual -= tmp;
+    residual -= ku;
     apply_mass(acceleration, tmp);
     residual -= tmp;
     compute_damping_force(velocity, cv);
@@ -737,7 +746,7 @@ namespace rupture
         contact_force = fault_force;
         fault->commit(time_step, time);
       }
-    update_energy(old_u, load, residual, cv);
+    update_energy(old_u, load, residual, cv, &ku);
   }
 
 

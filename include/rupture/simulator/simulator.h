@@ -195,7 +195,8 @@ namespace rupture
     update_energy(const VectorType &old_displacement,
                   const VectorType &load,
                   const VectorType &residual,
-                  const VectorType &damping_force);
+                  const VectorType &damping_force,
+                  const VectorType *stiffness_force = nullptr);
     void
     check_finite(const VectorType &v, const std::string &what) const;
 
