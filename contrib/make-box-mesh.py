@@ -9,8 +9,18 @@
 Layers are cut at the given heights (last coordinate); the top layer is
 named 'layer0', the next 'layer1', and so on. Sides are named west/east
 (x), south/north (y, 3-D) and bottom/top.
+
+--profile X0:DZ0 X1:DZ1 ... makes the (single) layer interface non-planar:
+it is moved up by DZ, linearly interpolated in x between the given points
+(constant outside them), and the grid lines above and below it are
+stretched to follow, so the interface stays a surface of mesh faces. For
+example, a fault with a kink:
+
+    contrib/make-box-mesh.py --dim 2 --size 1000 1000 --cells 8 8 \
+        --layers 500 --profile 0:-50 500:50 1000:-250 -o kinked.msh
 """
 import argparse
+import sys
 
 
 def main():
@@ -20,10 +30,17 @@ def main():
     p.add_argument("--size", type=float, nargs="+", required=True)
     p.add_argument("--cells", type=int, nargs="+", required=True)
     p.add_argument("--layers", type=float, nargs="*", default=[])
+    p.add_argument("--profile", nargs="*", default=[],
+                   help="X:DZ points of a piecewise linear offset of the "
+                   "layer interface (one layer only)")
     p.add_argument("-o", "--output", required=True)
     a = p.parse_args()
     dim = a.dim
-    assert len(a.size) == dim and len(a.cells) == dim
+    if len(a.size) != dim or len(a.cells) != dim:
+        p.error("--size and --cells need %d values each" % dim)
+    profile = sorted(tuple(map(float, s.split(":"))) for s in a.profile)
+    if profile and len(a.layers) != 1:
+        p.error("--profile needs exactly one value in --layers")
 
     n = a.cells
     coords = [[a.size[d] * i / n[d] for i in range(n[d] + 1)] for d in range(dim)]
@@ -34,6 +51,26 @@ def main():
         z[k] = h
     n_layers = len(a.layers) + 1
     heights = sorted(a.layers, reverse=True)
+
+    def offset(x):
+        if not profile:
+            return 0.0
+        if x <= profile[0][0]:
+            return profile[0][1]
+        for (x0, d0), (x1, d1) in zip(profile, profile[1:]):
+            if x <= x1:
+                return d0 + (d1 - d0) * (x - x0) / (x1 - x0)
+        return profile[-1][1]
+
+    def height(x, z):
+        """The vertical coordinate of a node at x whose flat height is z:
+        stretched so that the interface moves by offset(x)."""
+        if not profile:
+            return z
+        h, top, d = a.layers[0], a.size[dim - 1], offset(x)
+        if not 0 < h + d < top:
+            sys.exit("--profile moves the interface out of the box at x = %g" % x)
+        return z * (h + d) / h if z <= h else h + d + (z - h) * (top - h - d) / (top - h)
 
     def node_id(idx):
         i = 0
@@ -47,12 +84,14 @@ def main():
     if dim == 2:
         for j in range(n[1] + 1):
             for i in range(n[0] + 1):
-                nodes.append((node_id((i, j)), coords[0][i], coords[1][j], 0.0))
+                nodes.append((node_id((i, j)), coords[0][i],
+                              height(coords[0][i], coords[1][j]), 0.0))
     else:
         for k in range(n[2] + 1):
             for j in range(n[1] + 1):
                 for i in range(n[0] + 1):
-                    nodes.append((node_id((i, j, k)), coords[0][i], coords[1][j], coords[2][k]))
+                    nodes.append((node_id((i, j, k)), coords[0][i], coords[1][j],
+                                  height(coords[0][i], coords[2][k])))
 
     side_names = ["west", "east", "bottom", "top"] if dim == 2 else \
         ["west", "east", "south", "north", "bottom", "top"]

@@ -466,6 +466,20 @@ namespace rupture
 
 
     template <int dim>
+    std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+    Fault<dim>::dof_pairs() const
+    {
+      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+        result;
+      for (const auto &pair : pairs)
+        for (unsigned int c = 0; c < dim; ++c)
+          result.emplace_back(pair.minus[c], pair.plus[c]);
+      return result;
+    }
+
+
+
+    template <int dim>
     void
     Fault<dim>::assemble(const VectorType                &u,
                          const double                     dt,

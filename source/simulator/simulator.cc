@@ -237,6 +237,7 @@ namespace rupture
   template <int dim>
   Simulator<dim>::~Simulator()
   {
+    linear_solver.clear();
     dof_handler.clear();
   }
 
@@ -531,7 +532,13 @@ namespace rupture
             << fault->n_welded_nodes() << " welded interface nodes\n";
     null_space = rigid_body_modes();
     if (fault)
-      fault_output->setup(*fault, communicator);
+      {
+        fault_output->setup(*fault, communicator);
+        if (!fault->uses_split_nodes() && system_matrix.m() > 0)
+          linear_solver.set_fault_pairs(fault->dof_pairs(),
+                                        locally_owned_dofs,
+                                        communicator);
+      }
   }
 
 

@@ -1,8 +1,13 @@
 #include <rupture/solver/linear_solver.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <EpetraExt_MatrixMatrix.h>
+#include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
@@ -30,6 +35,40 @@ namespace rupture
           "'uncoupled' (ML's default, per process) or 'MIS' (maximal "
           "independent sets), another code path in ML that needs more "
           "memory.");
+        prm.declare_entry(
+          "AMG smoother",
+          "automatic",
+          Patterns::Selection("automatic|Chebyshev|symmetric Gauss-Seidel|"
+                              "symmetric block Gauss-Seidel"),
+          "Smoother on each level of the algebraic multigrid. 'Chebyshev' "
+          "(polynomial, only matrix products) suits elasticity alone. With a "
+          "penalty fault the slipping nodes couple normal and tangential "
+          "jumps through mu p_n (the nonsymmetric tangent), which only a "
+          "smoother that solves each node's dim x dim block at once handles "
+          "well: 'symmetric block Gauss-Seidel'. 'automatic' picks that one "
+          "with a penalty fault and 'Chebyshev' otherwise.");
+        prm.declare_entry("AMG smoother sweeps",
+                          "2",
+                          Patterns::Integer(1, 100),
+                          "Smoothing steps before and after each coarse "
+                          "correction.");
+        prm.declare_entry(
+          "AMG aggregation threshold",
+          "1e-4",
+          Patterns::Double(0, 1),
+          "Couplings weaker than this fraction (relative to the diagonal) "
+          "are ignored when ML groups nodes. A larger value (e.g. 0.01) lets "
+          "the two sides of a stiff penalty fault form their own "
+          "aggregates.");
+        prm.declare_entry(
+          "Fault pair transform",
+          "true",
+          Patterns::Bool(),
+          "With a penalty fault: build the AMG in the coordinates 'mean' and "
+          "'jump' of each split node pair instead of 'minus side' and 'plus "
+          "side' (see the manual, section on solvers). A penalty many times "
+          "the element stiffness then no longer stalls GMRES. 'false' builds "
+          "the AMG on the matrix as it is.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
                           Patterns::Double(0, 1),
@@ -49,13 +88,82 @@ namespace rupture
     LinearSolver::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      solver_type        = prm.get("Linear solver");
-      aggregation        = prm.get("AMG aggregation");
-      relative_tolerance = prm.get_double("Linear solver tolerance");
-      max_iterations     = prm.get_integer("Maximum linear iterations");
+      solver_type           = prm.get("Linear solver");
+      aggregation           = prm.get("AMG aggregation");
+      smoother              = prm.get("AMG smoother");
+      smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
+      aggregation_threshold = prm.get_double("AMG aggregation threshold");
+      use_pair_transform    = prm.get_bool("Fault pair transform");
+      relative_tolerance    = prm.get_double("Linear solver tolerance");
+      max_iterations        = prm.get_integer("Maximum linear iterations");
       prm.leave_subsection();
       AssertThrow(relative_tolerance > 0,
                   ExcMessage("<Solver/Linear solver tolerance> must be > 0."));
+    }
+
+
+
+    LinearSolver::~LinearSolver()
+    {
+      clear();
+    }
+
+
+
+    void
+    LinearSolver::set_fault_pairs(
+      const std::vector<
+        std::pair<types::global_dof_index, types::global_dof_index>> &pairs,
+      const IndexSet &locally_owned_dofs,
+      const MPI_Comm  communicator)
+    {
+      clear();
+      transform.reset();
+      const bool has_pairs =
+        Utilities::MPI::sum(pairs.size(), communicator) > 0;
+      penalty_fault = has_pairs;
+      if (!use_pair_transform || solver_type == "direct" || !has_pairs)
+        return;
+
+      // T is the identity except on the pairs, whose rows may belong to
+      // another process: every process writes the pairs it owns.
+      IndexSet touched(locally_owned_dofs.size());
+      for (const auto &p : pairs)
+        {
+          touched.add_index(p.first);
+          touched.add_index(p.second);
+        }
+      IndexSet writable = locally_owned_dofs;
+      writable.add_indices(touched);
+      DynamicSparsityPattern dsp(writable);
+      for (const auto i : locally_owned_dofs)
+        dsp.add(i, i);
+      for (const auto &p : pairs)
+        for (const auto r : {p.first, p.second})
+          for (const auto c : {p.first, p.second})
+            dsp.add(r, c);
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 locally_owned_dofs,
+                                                 communicator,
+                                                 writable);
+      transform = std::make_unique<TrilinosWrappers::SparseMatrix>();
+      transform->reinit(locally_owned_dofs,
+                        locally_owned_dofs,
+                        dsp,
+                        communicator);
+      for (const auto i : locally_owned_dofs)
+        transform->add(i, i, 1.);
+      // Rows: minus -> (1, 1) / sqrt(2), plus -> (1, -1) / sqrt(2); the
+      // owner of each row has already put 1 on its diagonal.
+      const double s = 1. / std::sqrt(2.);
+      for (const auto &p : pairs)
+        {
+          transform->add(p.first, p.first, s - 1.);
+          transform->add(p.first, p.second, s);
+          transform->add(p.second, p.first, s);
+          transform->add(p.second, p.second, -s - 1.);
+        }
+      transform->compress(VectorOperation::add);
     }
 
 
@@ -73,8 +181,12 @@ namespace rupture
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = higher_order;
-      data.smoother_sweeps       = 2;
-      data.aggregation_threshold = 1e-4;
+      data.smoother_sweeps       = smoother_sweeps;
+      data.smoother_type =
+        smoother != "automatic" ?
+          smoother.c_str() :
+          (penalty_fault ? "symmetric block Gauss-Seidel" : "Chebyshev");
+      data.aggregation_threshold = aggregation_threshold;
 
       Teuchos::ParameterList              parameters;
       std::unique_ptr<Epetra_MultiVector> unused;
@@ -104,8 +216,29 @@ namespace rupture
       parameters.set("aggregation: type",
                      aggregation == "MIS" ? "MIS" : "Uncoupled");
 
+      clear();
       amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-      amg->initialize(matrix, parameters);
+      if (!transform)
+        {
+          amg->initialize(matrix, parameters);
+          return;
+        }
+      // AMG for T A T, with the near null space T r (T = T^-1).
+      const Epetra_CrsMatrix &a = matrix.trilinos_matrix();
+      const Epetra_CrsMatrix &t = transform->trilinos_matrix();
+      {
+        Epetra_CrsMatrix at(Copy, a.RowMap(), 0);
+        int ierr = EpetraExt::MatrixMatrix::Multiply(a, false, t, false, at);
+        AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+        transformed = std::make_unique<Epetra_CrsMatrix>(Copy, a.RowMap(), 0);
+        ierr =
+          EpetraExt::MatrixMatrix::Multiply(t, false, at, false, *transformed);
+        AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+      }
+      Epetra_MultiVector transformed_modes(map, modes.NumVectors());
+      t.Multiply(false, modes, transformed_modes);
+      parameters.set("null space: vectors", transformed_modes.Values());
+      amg->initialize(*transformed, parameters);
     }
 
 
@@ -135,7 +268,31 @@ namespace rupture
       SolverControl control(max_iterations, relative_tolerance * b_norm);
       try
         {
-          if (use_cg)
+          if (transform)
+            {
+              // M^-1 = T AMG(T A T)^-1 T, right preconditioned so that the
+              // residual checked is that of the system itself.
+              struct TransformedAMG
+              {
+                const TrilinosWrappers::SparseMatrix    &t;
+                const TrilinosWrappers::PreconditionAMG &amg;
+                mutable TrilinosWrappers::MPI::Vector    u, v;
+                void
+                vmult(TrilinosWrappers::MPI::Vector       &dst,
+                      const TrilinosWrappers::MPI::Vector &src) const
+                {
+                  t.vmult(u, src);
+                  amg.vmult(v, u);
+                  t.vmult(dst, v);
+                }
+              } preconditioner{*transform, *amg, b, b};
+              dealii::SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+                control,
+                dealii::SolverGMRES<
+                  TrilinosWrappers::MPI::Vector>::AdditionalData(200, true));
+              gmres.solve(matrix, x, b, preconditioner);
+            }
+          else if (use_cg)
             {
               TrilinosWrappers::SolverCG cg(control);
               cg.solve(matrix, x, b, *amg);

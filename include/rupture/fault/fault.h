@@ -129,6 +129,13 @@ namespace rupture
       add_sparsity(DynamicSparsityPattern &dsp) const;
 
       /**
+       * The (minus, plus) DoF pairs of the locally owned split nodes, one
+       * per component, for the linear solver (LinearSolver::set_fault_pairs).
+       */
+      std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
+      dof_pairs() const;
+
+      /**
        * Return-map every pair for the displacement @p u (with ghost
        * entries), add the contact forces to @p force, and, if @p tangent is
        * given, add @p sign times the contact tangent to it. The states stay

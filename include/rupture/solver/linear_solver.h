@@ -7,7 +7,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
+
+class Epetra_CrsMatrix;
 
 namespace rupture
 {
@@ -51,6 +54,38 @@ namespace rupture
             TrilinosWrappers::MPI::Vector        &x,
             const TrilinosWrappers::MPI::Vector  &b) const;
 
+      /**
+       * The DoF pairs (minus side, plus side) of the split fault nodes that
+       * this process owns, one pair per component. With a stiff penalty
+       * these pairs are coupled far more strongly than anything else, and
+       * ML's aggregation cannot represent the two sides moving together.
+       * The preconditioner then works in the orthogonal coordinates
+       * a = (u_minus + u_plus) / sqrt(2), j = (u_minus - u_plus) / sqrt(2)
+       * (the transform T is its own inverse): AMG is built for T A T,
+       * where the penalty acts on j alone and a is an ordinary welded
+       * elastic body. Called once after the DoFs are set up; unless
+       * <Solver/Fault pair transform> is false.
+       */
+      void
+      set_fault_pairs(
+        const std::vector<
+          std::pair<types::global_dof_index, types::global_dof_index>> &pairs,
+        const IndexSet &locally_owned_dofs,
+        const MPI_Comm  communicator);
+
+      /**
+       * Free the preconditioner. ML's Ifpack smoothers keep a pointer to
+       * the matrix, so this must run before the matrix is destroyed.
+       */
+      void
+      clear()
+      {
+        amg.reset();
+        transformed.reset();
+      }
+
+      ~LinearSolver();
+
       double
       tolerance() const
       {
@@ -59,11 +94,20 @@ namespace rupture
 
     private:
       std::string  solver_type;
-      std::string  aggregation = "uncoupled";
+      std::string  aggregation           = "uncoupled";
+      std::string  smoother              = "automatic";
+      bool         penalty_fault         = false;
+      unsigned int smoother_sweeps       = 2;
+      double       aggregation_threshold = 1e-4;
       double       relative_tolerance;
       unsigned int max_iterations;
-      bool         use_cg = true;
+      bool         use_cg             = true;
+      bool         use_pair_transform = true;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
+      /// T (see set_fault_pairs()), or null without a penalty fault.
+      std::unique_ptr<TrilinosWrappers::SparseMatrix> transform;
+      /// T A T of the last initialize(), which the AMG refers to.
+      std::unique_ptr<Epetra_CrsMatrix> transformed;
     };
   } // namespace Solver
 } // namespace rupture
