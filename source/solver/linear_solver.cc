@@ -7,6 +7,8 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <EpetraExt_MatrixMatrix.h>
+#include <iomanip>
+#include <sstream>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
@@ -15,6 +17,17 @@ namespace rupture
 {
   namespace Solver
   {
+    namespace
+    {
+      std::string
+      short_number(const double x)
+      {
+        std::ostringstream s;
+        s << std::setprecision(3) << x;
+        return s.str();
+      }
+    } // namespace
+
     void
     LinearSolver::declare_parameters(ParameterHandler &prm)
     {
@@ -313,9 +326,9 @@ namespace rupture
                         " solve did not converge within " +
                         std::to_string(max_iterations) +
                         " iterations (residual reduced to " +
-                        std::to_string(e.last_residual / b_norm) +
+                        short_number(e.last_residual / b_norm) +
                         " of its start, wanted " +
-                        std::to_string(relative_tolerance) +
+                        short_number(relative_tolerance) +
                         "). Raise <Solver/Maximum linear iterations>, loosen "
                         "<Solver/Linear solver tolerance>, or check the "
                         "model for a part that no boundary condition "

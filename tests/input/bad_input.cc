@@ -106,6 +106,15 @@ main(int argc, char **argv)
         base + "subsection Fault\n  set Model = penalty contact\n"
                "  set Plane point = 0, 300\n  set Plane normal = 0, 1\nend\n");
   write("fault_penalty.prm", base + fault + "  set Normal penalty = -1\nend\n");
+  // Not bad input, but a run that fails: a Krylov solve limited to one
+  // iteration. Its message must reach the screen (ML's smoother once
+  // crashed in the destructor and swallowed it) and the code must be 1.
+  write("solver_fails.prm",
+        base + fault +
+          "end\nsubsection Solver\n  set Maximum linear iterations = 1\n"
+          "  set Linear solver tolerance = 1e-30\n"
+          "end\nsubsection Boundary conditions\n  set Traction = top: 1e6; "
+          "-1e7\nend\nset Output directory = failed-run\n");
   write("fault_explicit.prm",
         base + fault +
           "end\nsubsection Time integration\n  set Scheme = explicit "
@@ -152,6 +161,7 @@ main(int argc, char **argv)
         {"split_node_loading.prm"});
   check("mu_0 below mu_d", {"fault_friction.prm"});
   check("forced slip normal to the fault", {"forced_direction.prm"});
+  check("linear solve that does not converge", {"solver_fails.prm"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});
