@@ -145,6 +145,18 @@ namespace rupture
                         "1",
                         Patterns::Integer(1),
                         "Print the step line every this many steps.");
+      prm.declare_entry(
+        "Receivers",
+        "",
+        Patterns::Anything(),
+        "Off-fault stations: 'name: x, y[, z]' entries separated by ';', "
+        "e.g. 'body030st120dp000: 12000, 3000'. The displacement and "
+        "velocity there (interpolated, global components) are recorded "
+        "every step and written to <output>/<name>.dat with the columns 't "
+        "x-disp x-vel y-disp y-vel [z-disp z-vel]', in the layout of the "
+        "SCEC off-fault station files. After a loading phase the series "
+        "starts with the dynamic phase. A point outside the mesh is an "
+        "error.");
     }
     prm.leave_subsection();
 
@@ -292,6 +304,8 @@ namespace rupture
     prm.enter_subsection("Output");
     output_interval = prm.get_double("Output interval");
     screen_interval = prm.get_integer("Screen output interval");
+    receivers = std::make_unique<Output::Receivers<dim>>(prm.get("Receivers"),
+                                                         communicator);
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
@@ -530,6 +544,7 @@ namespace rupture
     if (fault)
       pcout << "   Fault: " << fault->n_split_nodes() << " split node pairs, "
             << fault->n_welded_nodes() << " welded interface nodes\n";
+    receivers->setup(dof_handler, locally_owned_dofs);
     null_space = rigid_body_modes();
     if (fault)
       {
@@ -663,6 +678,7 @@ namespace rupture
     statistics.add_row(statistics_row());
     if (fault)
       fault_output->record(*fault, time);
+    receivers->record(displacement, velocity, time);
     write_step_output(true);
 
     if (time_parameters.loading_phase)
@@ -691,6 +707,8 @@ namespace rupture
             fault_output->start_dynamic_phase();
             fault_output->record(*fault, 0);
           }
+        receivers->clear();
+        receivers->record(displacement, velocity, 0);
         if (current_scheme != TimeIntegration::Scheme::quasi_static)
           {
             velocity = 0;
@@ -801,6 +819,7 @@ namespace rupture
         statistics.add_row(statistics_row());
         if (fault)
           fault_output->record(*fault, phase_time);
+        receivers->record(displacement, velocity, phase_time);
 
         const bool stop = stop_when_weakening && fault->n_weakening() > 0;
         if (step % screen_interval == 0 || i == n_steps || stop)
@@ -898,6 +917,11 @@ namespace rupture
   void
   Simulator<dim>::write_step_output(const bool force)
   {
+    // Receiver series are small: written at every output time and at the
+    // end, also when no volume output is wanted.
+    if (force ||
+        (output_interval >= 0 && time >= next_output_time - 1e-9 * time_step))
+      receivers->write(output_directory, time_step);
     if (output_interval < 0)
       return;
     if (!force && time < next_output_time - 1e-9 * time_step)

@@ -517,10 +517,21 @@ namespace rupture
             // where nodes slip), for this iteration only.
             scratch = 0;
             assemble_contact(scratch, true, +1);
-            linear_solver.initialize(system_matrix,
-                                     null_space,
-                                     false,
-                                     fe_degree > 1);
+            // The preconditioner is rebuilt when the pattern of stick, slip
+            // and open nodes changes; in between GMRES solves with the
+            // current tangent and the last preconditioner (with the fault
+            // pair transform it holds its own copy of the matrix).
+            const unsigned long signature = fault->status_signature();
+            if (k == 0 || signature != preconditioner_signature ||
+                !linear_solver.keeps_own_matrix())
+              {
+                TimerOutput::Scope t(timer, "Preconditioner set-up");
+                linear_solver.initialize(system_matrix,
+                                         null_space,
+                                         false,
+                                         fe_degree > 1);
+                preconditioner_signature = signature;
+              }
           }
         increment = 0;
         {

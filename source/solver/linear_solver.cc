@@ -7,11 +7,12 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <EpetraExt_MatrixMatrix.h>
-#include <iomanip>
-#include <sstream>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
+
+#include <iomanip>
+#include <sstream>
 
 namespace rupture
 {
@@ -190,6 +191,8 @@ namespace rupture
     {
       use_cg =
         (solver_type == "CG" || (solver_type == "automatic" && symmetric));
+      if (solver_type == "direct")
+        return;
 
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;

@@ -5,6 +5,7 @@
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
 #include <rupture/output/log.h>
+#include <rupture/output/receivers.h>
 #include <rupture/output/statistics.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/scene/boundary_conditions.h>
@@ -236,6 +237,7 @@ namespace rupture
     std::unique_ptr<Scene::Interface<dim>>   scene;
     std::unique_ptr<Fault::Fault<dim>>       fault;
     std::unique_ptr<Fault::FaultOutput<dim>> fault_output;
+    std::unique_ptr<Output::Receivers<dim>>  receivers;
     Material::ElasticMaterials               materials;
     Scene::BoundaryConditions<dim>           boundary_conditions;
     Solver::LinearSolver                     linear_solver;
@@ -304,14 +306,16 @@ namespace rupture
     /// Work done on the fault: penalty spring energy plus friction (J).
     double       fault_work;
     unsigned int last_linear_iterations;
-    unsigned int last_newton_iterations;
-    double       newton_force_tolerance;
-    double       newton_displacement_tolerance;
-    unsigned int max_newton_iterations;
-    unsigned int max_step_cuts;
-    unsigned int n_step_cuts = 0;
-    double       wall_time_start;
-    double       next_output_time;
+    /// Fault status for which the preconditioner was last built.
+    unsigned long preconditioner_signature = 0;
+    unsigned int  last_newton_iterations;
+    double        newton_force_tolerance;
+    double        newton_displacement_tolerance;
+    unsigned int  max_newton_iterations;
+    unsigned int  max_step_cuts;
+    unsigned int  n_step_cuts = 0;
+    double        wall_time_start;
+    double        next_output_time;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     Output::Statistics                         statistics;

@@ -86,6 +86,17 @@ namespace rupture
 
       ~LinearSolver();
 
+      /**
+       * Whether the preconditioner refers to its own matrix (T A T) rather
+       * than to the one passed to initialize(), so that it stays valid
+       * while that matrix changes.
+       */
+      bool
+      keeps_own_matrix() const
+      {
+        return transform != nullptr;
+      }
+
       double
       tolerance() const
       {

@@ -1,0 +1,95 @@
+#ifndef rupture_output_receivers_h
+#define rupture_output_receivers_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  namespace Output
+  {
+    using namespace dealii;
+
+    /**
+     * Receivers: named points in the body (off the fault) whose
+     * displacement and velocity are recorded at every step and written as
+     * time series, laid out like the SCEC off-fault station files
+     * (<output>/<name>.dat, columns t, then displacement and velocity per
+     * global component: 't x-disp x-vel y-disp y-vel [z-disp z-vel]').
+     * Values are interpolated with the finite element, never snapped to a
+     * node; a receiver outside the mesh is an error.
+     */
+    template <int dim>
+    class Receivers
+    {
+    public:
+      /**
+       * Parse 'name: x, y[, z]; ...' (<Output/Receivers>). Throws with a
+       * message naming the entry on malformed input.
+       */
+      Receivers(const std::string &specification, const MPI_Comm communicator);
+
+      bool
+      empty() const
+      {
+        return receivers.empty();
+      }
+
+      /**
+       * Find the cell of each receiver. A receiver on a split fault is
+       * taken on the side of the cell found first; receivers are meant to
+       * be off the fault.
+       */
+      void
+      setup(const DoFHandler<dim> &dof_handler,
+            const IndexSet        &locally_owned_dofs);
+
+      /// Record the values at @p time (one row per call).
+      void
+      record(const TrilinosWrappers::MPI::Vector &displacement,
+             const TrilinosWrappers::MPI::Vector &velocity,
+             const double                         time);
+
+      /// Forget the rows so far (the series restarts with the dynamic phase).
+      void
+      clear()
+      {
+        for (auto &r : receivers)
+          r.rows.clear();
+      }
+
+      /// Write all rows so far (rank 0), replacing the files.
+      void
+      write(const std::string &output_directory, const double time_step) const;
+
+    private:
+      struct Receiver
+      {
+        std::string name;
+        Point<dim>  location;
+        /// On the owning rank: the cell's DoFs and their weights per
+        /// component (the shape function values at the point).
+        std::vector<types::global_dof_index> dofs;
+        std::vector<double>                  weights;
+        std::vector<unsigned int>            components;
+        bool                                 owned = false;
+        /// Rows of (time, u, v) on rank 0.
+        std::vector<std::array<double, 1 + 2 * dim>> rows;
+      };
+
+      MPI_Comm                      communicator;
+      std::vector<Receiver>         receivers;
+      IndexSet                      owned;
+      IndexSet                      needed;
+      TrilinosWrappers::MPI::Vector ghosted;
+    };
+  } // namespace Output
+} // namespace rupture
+
+#endif
