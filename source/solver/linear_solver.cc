@@ -80,7 +80,7 @@ namespace rupture
           Patterns::Bool(),
           "With a penalty fault: build the AMG in the coordinates 'mean' and "
           "'jump' of each split node pair instead of 'minus side' and 'plus "
-          "side' (see the manual, section on solvers). A penalty many times "
+          "side' (manual, section 3.7). A penalty many times "
           "the element stiffness then no longer stalls GMRES. 'false' builds "
           "the AMG on the matrix as it is.");
         prm.declare_entry("Linear solver tolerance",
