@@ -190,6 +190,44 @@ namespace rupture
                       const unsigned int,
                       const std::string &,
                       const std::string &);
+    template <int dim>
+    std::vector<std::pair<std::string, Point<dim>>>
+    parse_named_points(const std::string &text, const std::string &entry_name)
+    {
+      std::vector<std::pair<std::string, Point<dim>>> points;
+      for (const auto &entry : split_list(text, ';'))
+        {
+          const auto colon = entry.find(':');
+          AssertThrow(colon != std::string::npos,
+                      ExcMessage("<" + entry_name +
+                                 "> expects 'name: x, y[, z]' entries "
+                                 "separated by ';', but <" +
+                                 entry + "> has no ':'."));
+          const std::string name =
+            dealii::Utilities::trim(entry.substr(0, colon));
+          AssertThrow(!name.empty() &&
+                        name.find_first_of("/ \t") == std::string::npos,
+                      ExcMessage("The name <" + name + "> in <" + entry_name +
+                                 "> must be non-empty and have no '/' or "
+                                 "spaces."));
+          for (const auto &other : points)
+            AssertThrow(other.first != name,
+                        ExcMessage("The name <" + name +
+                                   "> appears twice in <" + entry_name + ">."));
+          points.emplace_back(
+            name,
+            Point<dim>(parse_vector<dim>(entry.substr(colon + 1),
+                                         entry_name + " (" + name + ")")));
+        }
+      return points;
+    }
+
+
+
+    template std::vector<std::pair<std::string, Point<2>>>
+    parse_named_points<2>(const std::string &, const std::string &);
+    template std::vector<std::pair<std::string, Point<3>>>
+    parse_named_points<3>(const std::string &, const std::string &);
     template Tensor<1, 2>
     parse_vector<2>(const std::string &, const std::string &, const bool);
     template Tensor<1, 3>

@@ -62,22 +62,13 @@ namespace rupture
       prm.leave_subsection();
 
       stations.clear();
-      for (const auto &entry : Utilities::split_list(station_text, ';'))
+      for (const auto &[name, location] :
+           Utilities::parse_named_points<dim>(station_text,
+                                              "Fault/Output/Stations"))
         {
-          const auto colon = entry.find(':');
-          AssertThrow(colon != std::string::npos,
-                      ExcMessage("<Fault/Output/Stations> expects 'name: x, "
-                                 "y[, z]' entries separated by ';', but <" +
-                                 entry + "> has no ':'."));
           Station s;
-          s.name = dealii::Utilities::trim(entry.substr(0, colon));
-          AssertThrow(!s.name.empty() &&
-                        s.name.find_first_of("/ \t") == std::string::npos,
-                      ExcMessage("The station name <" + s.name +
-                                 "> in <Fault/Output/Stations> must be "
-                                 "non-empty and have no '/' or spaces."));
-          s.location = Point<dim>(Utilities::parse_vector<dim>(
-            entry.substr(colon + 1), "Fault/Output/Stations (" + s.name + ")"));
+          s.name     = name;
+          s.location = location;
           stations.push_back(s);
         }
     }

@@ -17,27 +17,13 @@ namespace rupture
                               const MPI_Comm     communicator)
       : communicator(communicator)
     {
-      for (const auto &entry : Utilities::split_list(specification, ';'))
+      for (const auto &[name, location] :
+           Utilities::parse_named_points<dim>(specification,
+                                              "Output/Receivers"))
         {
-          const auto colon = entry.find(':');
-          AssertThrow(colon != std::string::npos,
-                      ExcMessage("<Output/Receivers> expects 'name: x, y[, "
-                                 "z]' entries separated by ';', but <" +
-                                 entry + "> has no ':'."));
           Receiver r;
-          r.name = dealii::Utilities::trim(entry.substr(0, colon));
-          AssertThrow(!r.name.empty() &&
-                        r.name.find_first_of("/ \t") == std::string::npos,
-                      ExcMessage("The receiver name <" + r.name +
-                                 "> in <Output/Receivers> must be non-empty "
-                                 "and have no '/' or spaces."));
-          for (const auto &other : receivers)
-            AssertThrow(other.name != r.name,
-                        ExcMessage("The receiver name <" + r.name +
-                                   "> appears twice in <Output/Receivers>."));
-          r.location = Point<dim>(
-            Utilities::parse_vector<dim>(entry.substr(colon + 1),
-                                         "Output/Receivers (" + r.name + ")"));
+          r.name     = name;
+          r.location = location;
           receivers.push_back(r);
         }
     }

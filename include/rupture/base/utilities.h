@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rupture
@@ -44,6 +45,15 @@ namespace rupture
     parse_vector(const std::string &text,
                  const std::string &entry_name,
                  const bool         allow_single_value = false);
+
+    /**
+     * Parse named points 'name: x, y[, z]; name: ...' (station and receiver
+     * lists). Names must be non-empty, unique, and free of '/' and spaces
+     * (they become file names). The message names @p entry_name on error.
+     */
+    template <int dim>
+    std::vector<std::pair<std::string, Point<dim>>>
+    parse_named_points(const std::string &text, const std::string &entry_name);
 
     /**
      * Split a comma separated list into trimmed, non-empty strings.
