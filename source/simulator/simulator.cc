@@ -250,6 +250,19 @@ namespace rupture
   Simulator<dim>::~Simulator()
   {
     linear_solver.clear();
+    // A run that stops with an error (a Newton or solver failure, a
+    // non-finite value) still leaves the statistics of every step it
+    // completed; statistics live on rank 0 only, so no communication.
+    // Nothing is written if the input was refused (the output directory
+    // was never touched).
+    if (output_prepared && statistics.n_rows() > 0 &&
+        dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      try
+        {
+          statistics.write(output_directory + "/statistics");
+        }
+      catch (...)
+        {}
     dof_handler.clear();
   }
 
@@ -628,6 +641,7 @@ namespace rupture
                                          parameters.str());
       }
     MPI_Barrier(communicator);
+    output_prepared = true;
     volume_output =
       std::make_unique<Output::VolumeOutput<dim>>(output_directory,
                                                   materials,

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 int
 main(int argc, char **argv)
@@ -47,6 +48,27 @@ main(int argc, char **argv)
                    errors.find("largest in component") != std::string::npos) ?
                     "yes" :
                     "no");
+      if (code != 0)
+        {
+          // The statistics of the steps before the stop are kept, and none
+          // of the values written is a NaN or Inf.
+          const auto rows = tests::read_statistics("output-blow-up/statistics");
+          const std::string::size_type at = errors.find("At step ");
+          const unsigned int           failed_step =
+            at == std::string::npos ? 0 : std::atoi(errors.c_str() + at + 8);
+          bool finite = true;
+          for (const auto &r : rows)
+            for (const double v : r)
+              finite = finite && std::isfinite(v);
+          std::printf("  statistics kept up to the step before the stop: %s, "
+                      "all finite: %s\n",
+                      (!rows.empty() && failed_step > 1 &&
+                       static_cast<unsigned int>(rows.back()[0]) ==
+                         failed_step - 1) ?
+                        "yes" :
+                        "no",
+                      finite ? "yes" : "no");
+        }
       if (code == 0)
         {
           const auto rows = tests::read_statistics("output-blow-up/statistics");

@@ -306,6 +306,9 @@ namespace rupture
     /// Work done on the fault: penalty spring energy plus friction (J).
     double       fault_work;
     unsigned int last_linear_iterations;
+    /// Whether prepare_output_directory() has run (only then may the
+    /// destructor write the statistics of a failed run).
+    bool output_prepared = false;
     /// Fault status for which the preconditioner was last built.
     unsigned long preconditioner_signature = 0;
     unsigned int  last_newton_iterations;
