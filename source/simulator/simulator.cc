@@ -830,7 +830,19 @@ namespace rupture
               break;
           }
         check_finite(displacement, "displacement");
-        statistics.add_row(statistics_row());
+        {
+          // The displacement may still be finite when the energies computed
+          // from it overflow: that is a blow-up too, and no value that is
+          // not finite is ever written.
+          const std::vector<double> row = statistics_row();
+          const bool finite = std::all_of(row.begin(), row.end(), [](double x) {
+            return std::isfinite(x);
+          });
+          check_finite(displacement,
+                       "energy computed from the displacement",
+                       !finite);
+          statistics.add_row(row);
+        }
         if (fault)
           fault_output->record(*fault, phase_time);
         receivers->record(displacement, velocity, phase_time);

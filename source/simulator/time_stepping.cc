@@ -140,10 +140,11 @@ namespace rupture
   template <int dim>
   void
   Simulator<dim>::check_finite(const VectorType  &v,
-                               const std::string &what) const
+                               const std::string &what,
+                               const bool         overflowed) const
   {
     const double norm = v.l2_norm();
-    if (std::isfinite(norm))
+    if (std::isfinite(norm) && !overflowed)
       return;
 
     // Where: the support point of the entry that is not finite, or, if

@@ -199,7 +199,9 @@ namespace rupture
                   const VectorType &damping_force,
                   const VectorType *stiffness_force = nullptr);
     void
-    check_finite(const VectorType &v, const std::string &what) const;
+    check_finite(const VectorType  &v,
+                 const std::string &what,
+                 const bool         overflowed = false) const;
 
     // --- output (simulator.cc) ---
     void
