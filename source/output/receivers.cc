@@ -39,8 +39,9 @@ namespace rupture
         dealii::Utilities::MPI::this_mpi_process(communicator);
       const unsigned int n_ranks =
         dealii::Utilities::MPI::n_mpi_processes(communicator);
-      owned  = locally_owned_dofs;
-      needed = IndexSet(locally_owned_dofs.size());
+      if (receivers.empty())
+        return;
+      IndexSet needed(locally_owned_dofs.size());
       for (auto &r : receivers)
         {
           r.dofs.clear();

@@ -71,9 +71,9 @@ namespace rupture
           "1e-4",
           Patterns::Double(0, 1),
           "Couplings weaker than this fraction (relative to the diagonal) "
-          "are ignored when ML groups nodes. A larger value (e.g. 0.01) lets "
-          "the two sides of a stiff penalty fault form their own "
-          "aggregates.");
+          "are ignored when ML groups nodes. Raising it did not help with "
+          "stiff penalty faults (measured: doc/performance.md); the fault "
+          "pair transform does.");
         prm.declare_entry(
           "Fault pair transform",
           "true",

@@ -85,8 +85,6 @@ namespace rupture
 
       MPI_Comm                      communicator;
       std::vector<Receiver>         receivers;
-      IndexSet                      owned;
-      IndexSet                      needed;
       TrilinosWrappers::MPI::Vector ghosted;
     };
   } // namespace Output
