@@ -42,6 +42,32 @@ namespace rupture
           "material changes, e.g. '-2000, -10000'. Empty for a homogeneous "
           "box. The top layer is material id 0, the next one down 1, and so "
           "on. The mesh is built so that each interface is a mesh surface.");
+        prm.enter_subsection("Grading");
+        {
+          prm.declare_entry(
+            "Growth factor",
+            "1",
+            Patterns::Double(1, 2),
+            "1 (the default) gives uniform cells. Above 1 only the core "
+            "(<Core lower corner> to <Core upper corner>) has uniform cells, "
+            "<Number of cells> across it; outside the core each cell is this "
+            "factor larger than its neighbour towards the core, up to the "
+            "box faces (the outermost cells of each side are scaled "
+            "together to end on the face). Values of 1.05-1.2 keep "
+            "reflections from the change of size small. Not with <Layer "
+            "interfaces>.");
+          prm.declare_entry("Core lower corner",
+                            "",
+                            Patterns::Anything(),
+                            "Lower corner of the uniform core (m), inside the "
+                            "box; empty for the box's lower corner.");
+          prm.declare_entry("Core upper corner",
+                            "",
+                            Patterns::Anything(),
+                            "Upper corner of the uniform core (m), inside the "
+                            "box; empty for the box's upper corner.");
+        }
+        prm.leave_subsection();
       }
       prm.leave_subsection();
       prm.leave_subsection();
@@ -94,6 +120,34 @@ namespace rupture
                                  std::to_string(z) +
                                  ", which is not strictly inside the box's "
                                  "vertical extent."));
+        prm.enter_subsection("Grading");
+        {
+          growth_factor           = prm.get_double("Growth factor");
+          const std::string lower = prm.get("Core lower corner");
+          const std::string upper = prm.get("Core upper corner");
+          core_lower = lower.find_first_not_of(" \t") == std::string::npos ?
+                         lower_corner :
+                         Point<dim>(Utilities::parse_vector<dim>(
+                           lower, "Scene/Box/Grading/Core lower corner", true));
+          core_upper = upper.find_first_not_of(" \t") == std::string::npos ?
+                         upper_corner :
+                         Point<dim>(Utilities::parse_vector<dim>(
+                           upper, "Scene/Box/Grading/Core upper corner", true));
+        }
+        prm.leave_subsection();
+        for (unsigned int d = 0; d < dim; ++d)
+          AssertThrow(lower_corner[d] <= core_lower[d] &&
+                        core_lower[d] < core_upper[d] &&
+                        core_upper[d] <= upper_corner[d],
+                      ExcMessage(
+                        "<Scene/Box/Grading/Core lower corner> and <Core "
+                        "upper corner> must lie inside the box, the lower "
+                        "below the upper, but coordinate " +
+                        std::to_string(d) + " does not."));
+        AssertThrow(growth_factor == 1 || layer_interfaces.empty(),
+                    ExcMessage("<Scene/Box/Grading/Growth factor> above 1 "
+                               "cannot be combined with <Scene/Box/Layer "
+                               "interfaces>; use one or the other."));
         AssertThrow(layer_interfaces.size() + 1 <= n_cells[dim - 1],
                     ExcMessage("<Scene/Box/Layer interfaces> defines more "
                                "layers than there are cells in the vertical "
@@ -107,10 +161,52 @@ namespace rupture
 
 
     template <int dim>
+    std::vector<double>
+    Box<dim>::graded_steps(const unsigned int d) const
+    {
+      const double h = (core_upper[d] - core_lower[d]) / n_cells[d];
+      // Cells growing by the factor from h r on, enough to cover the
+      // distance, then scaled together to end exactly on the face.
+      const auto outer = [&](const double distance) {
+        std::vector<double> cells;
+        double              size = h, sum = 0;
+        while (sum < distance * (1 - 1e-12))
+          {
+            size *= growth_factor;
+            cells.push_back(size);
+            sum += size;
+          }
+        for (double &c : cells)
+          c *= distance / sum;
+        return cells;
+      };
+      std::vector<double> steps = outer(core_lower[d] - lower_corner[d]);
+      std::reverse(steps.begin(), steps.end());
+      steps.insert(steps.end(), n_cells[d], h);
+      const std::vector<double> upper = outer(upper_corner[d] - core_upper[d]);
+      steps.insert(steps.end(), upper.begin(), upper.end());
+      return steps;
+    }
+
+
+
+    template <int dim>
     void
     Box<dim>::create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
+      if (growth_factor > 1)
+        {
+          std::vector<std::vector<double>> steps(dim);
+          for (unsigned int d = 0; d < dim; ++d)
+            steps[d] = graded_steps(d);
+          GridGenerator::subdivided_hyper_rectangle(
+            triangulation, steps, lower_corner, upper_corner, true);
+          // Colorizing numbers the boundaries, but also sets material ids.
+          for (const auto &cell : triangulation.active_cell_iterators())
+            cell->set_material_id(0);
+          return;
+        }
       // Cell sizes per direction. In the vertical direction the layer
       // interfaces are mesh lines: each layer gets a share of the cells in
       // proportion to its thickness.

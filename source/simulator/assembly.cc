@@ -1,15 +1,19 @@
 #include <rupture/simulator/simulator.h>
 
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 
 namespace rupture
@@ -488,6 +492,111 @@ namespace rupture
 
 
 
+  /**
+   * The cell-by-cell stiffness operator: for each locally owned cell its
+   * DoFs (as local indices of a vector with ghosts) and its element matrix.
+   * Cells of the same material, element and shape (vertex offsets equal to
+   * 1e-9 of the cell diameter) share one stored matrix; once
+   * max_matrices distinct ones are stored, the element matrices of further
+   * shapes are recomputed at each product.
+   */
+  template <int dim>
+  struct Simulator<dim>::CellStiffness
+  {
+    static constexpr unsigned int recompute =
+      std::numeric_limits<unsigned int>::max();
+    std::vector<unsigned int>                                   offsets;
+    std::vector<unsigned int>                                   local_dofs;
+    std::vector<unsigned int>                                   matrix_index;
+    std::vector<FullMatrix<double>>                             matrices;
+    std::vector<typename DoFHandler<dim>::active_cell_iterator> recomputed;
+    mutable LinearAlgebra::distributed::Vector<double>          x, y;
+  };
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_cell_stiffness()
+  {
+    TimerOutput::Scope t(timer, "Cell stiffness set-up");
+    cell_stiffness.reset();
+    // With hanging nodes the products go through the constraints, cell by
+    // cell, with recomputed element matrices (apply_stiffness).
+    if (hanging_constraints.n_constraints() > 0)
+      return;
+    auto       cs   = std::make_shared<CellStiffness>();
+    const auto part = std::make_shared<dealii::Utilities::MPI::Partitioner>(
+      locally_owned_dofs, locally_relevant_dofs, communicator);
+    cs->x.reinit(part);
+    cs->y.reinit(part);
+
+    const std::size_t max_matrices =
+      std::max<std::size_t>(64,
+                            triangulation.n_locally_owned_active_cells() / 8);
+    std::map<std::vector<std::int64_t>, unsigned int> shapes;
+    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>                    hp_values(fe_collection,
+                                q_cells,
+                                update_values | update_gradients |
+                                  update_JxW_values);
+    std::vector<types::global_dof_index> dofs;
+    std::vector<std::int64_t>            key;
+    cs->offsets.push_back(0);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (const auto dof : dofs)
+            cs->local_dofs.push_back(part->global_to_local(dof));
+          cs->offsets.push_back(cs->local_dofs.size());
+
+          const double unit = 1e-9 * cell->diameter();
+          key               = {static_cast<std::int64_t>(cell->material_id()),
+                               static_cast<std::int64_t>(cell->active_fe_index())};
+          for (const auto v : cell->vertex_indices())
+            for (unsigned int d = 0; d < dim; ++d)
+              key.push_back(
+                std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
+          key.push_back(std::llround(cell->diameter() * 1e6));
+          const auto found = shapes.find(key);
+          if (found != shapes.end())
+            cs->matrix_index.push_back(found->second);
+          else if (cs->matrices.size() < max_matrices)
+            {
+              hp_values.reinit(cell);
+              const FEValues<dim> &fe_values =
+                hp_values.get_present_fe_values();
+              FullMatrix<double> k(dofs.size(), dofs.size());
+              local_elasticity_matrices<dim>(fe_values,
+                                             FEValuesExtractors::Vector(
+                                               cell->active_fe_index() * dim),
+                                             materials.get(cell->material_id()),
+                                             k,
+                                             nullptr);
+              shapes.emplace(key, cs->matrices.size());
+              cs->matrix_index.push_back(cs->matrices.size());
+              cs->matrices.push_back(std::move(k));
+            }
+          else
+            {
+              cs->matrix_index.push_back(CellStiffness::recompute);
+              cs->recomputed.push_back(cell);
+            }
+        }
+    const unsigned long n_stored = dealii::Utilities::MPI::sum(
+      static_cast<unsigned long>(cs->matrices.size()), communicator);
+    const unsigned long n_recomputed = dealii::Utilities::MPI::sum(
+      static_cast<unsigned long>(cs->recomputed.size()), communicator);
+    pcout << "   Stiffness operator: cell by cell, " << n_stored
+          << " stored element matrices, " << n_recomputed
+          << " cells recomputed at each product\n";
+    cell_stiffness = cs;
+  }
+
+
+
   template <int dim>
   void
   Simulator<dim>::apply_stiffness(const VectorType &x, VectorType &y) const
@@ -495,6 +604,76 @@ namespace rupture
     if (!stiffness_cell_by_cell)
       {
         stiffness_matrix.vmult(y, x);
+        return;
+      }
+    if (cell_stiffness)
+      {
+        TimerOutput::Scope   t(timer, "Stiffness product cell by cell");
+        const CellStiffness &cs = *cell_stiffness;
+        // Both vectors number their owned entries in increasing global
+        // order, so the owned parts copy one to one.
+        const unsigned int n_owned = cs.x.locally_owned_size();
+        AssertDimension(static_cast<unsigned int>(x.locally_owned_size()),
+                        n_owned);
+        const double *xs = x.trilinos_vector()[0];
+        for (unsigned int i = 0; i < n_owned; ++i)
+          cs.x.local_element(i) = xs[i];
+        cs.x.update_ghost_values();
+        cs.y = 0;
+
+        hp::FEValues<dim>                 *hp_values = nullptr;
+        std::unique_ptr<hp::FEValues<dim>> hp_storage;
+        const hp::QCollection<dim>         q_cells(QGauss<dim>(fe_degree + 1));
+        FullMatrix<double>                 k;
+        std::vector<double>                local_x;
+        auto                               recomputed = cs.recomputed.begin();
+        for (unsigned int c = 0; c + 1 < cs.offsets.size(); ++c)
+          {
+            const unsigned int        begin = cs.offsets[c];
+            const unsigned int        n     = cs.offsets[c + 1] - begin;
+            const unsigned int       *dofs  = cs.local_dofs.data() + begin;
+            const FullMatrix<double> *matrix;
+            if (cs.matrix_index[c] != CellStiffness::recompute)
+              matrix = &cs.matrices[cs.matrix_index[c]];
+            else
+              {
+                if (!hp_values)
+                  {
+                    hp_storage =
+                      std::make_unique<hp::FEValues<dim>>(fe_collection,
+                                                          q_cells,
+                                                          update_values |
+                                                            update_gradients |
+                                                            update_JxW_values);
+                    hp_values = hp_storage.get();
+                  }
+                const auto &cell = *recomputed++;
+                hp_values->reinit(cell);
+                k.reinit(n, n);
+                local_elasticity_matrices<dim>(
+                  hp_values->get_present_fe_values(),
+                  FEValuesExtractors::Vector(cell->active_fe_index() * dim),
+                  materials.get(cell->material_id()),
+                  k,
+                  nullptr);
+                matrix = &k;
+              }
+            local_x.resize(n);
+            for (unsigned int i = 0; i < n; ++i)
+              local_x[i] = cs.x.local_element(dofs[i]);
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const double *row = &(*matrix)(i, 0);
+                double        sum = 0;
+                for (unsigned int j = 0; j < n; ++j)
+                  sum += row[j] * local_x[j];
+                cs.y.local_element(dofs[i]) += sum;
+              }
+          }
+        cs.y.compress(VectorOperation::add);
+        double *ys = y.trilinos_vector()[0];
+        for (unsigned int i = 0; i < n_owned; ++i)
+          ys[i] = cs.y.local_element(i);
         return;
       }
     TimerOutput::Scope t(timer, "Stiffness product cell by cell");

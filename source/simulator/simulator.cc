@@ -57,13 +57,16 @@ namespace rupture
         "Stiffness operator",
         "matrix",
         Patterns::Selection("matrix|cell by cell"),
-        "How products with the stiffness matrix K (residuals, energies) are "
-        "formed: 'matrix' stores K (about 1 KB per DoF for trilinear "
-        "elements in 3-D); 'cell by cell' recomputes the element "
-        "stiffness at each product and stores no K, which halves the "
-        "memory of implicit and quasi-static runs (the solver's system "
-        "matrix stays) at the cost of an assembly per product. For very "
-        "large models such as northeast-japan-full.prm.");
+        "How products with the stiffness matrix K (residuals, energies, the "
+        "explicit step) are formed: 'matrix' stores K (about 1 KB per DoF "
+        "for trilinear elements in 3-D); 'cell by cell' stores no K but "
+        "multiplies element by element. Cells of the same shape and "
+        "material share one stored element matrix (a structured box needs "
+        "only a few), the others are recomputed at each product. It "
+        "halves the memory of implicit and quasi-static runs (the solver's "
+        "system matrix stays), and an explicit run then stores no matrix "
+        "at all. For large models such as northeast-japan-full.prm and "
+        "TPV3 at fine resolution.");
       prm.declare_entry("Mass matrix",
                         "consistent",
                         Patterns::Selection("consistent|lumped"),
@@ -501,38 +504,53 @@ namespace rupture
       AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
     increment_constraints.close();
 
-    DynamicSparsityPattern dsp(locally_relevant_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    dsp,
-                                    hanging_constraints,
-                                    true);
-    if (fault)
-      fault->add_sparsity(dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned_dofs,
-                                               communicator,
-                                               locally_relevant_dofs);
-
     using Scheme        = TimeIntegration::Scheme;
     const Scheme scheme = time_parameters.scheme;
+    const bool   needs_system_matrix =
+      (scheme != Scheme::explicit_central_difference ||
+       time_parameters.loading_phase);
+    const bool needs_mass_matrix =
+      (scheme == Scheme::implicit_newmark && !use_lumped_mass);
+
+    // The sparsity pattern, only if some matrix is stored (an explicit run
+    // with the cell-by-cell operator stores none).
+    DynamicSparsityPattern dsp;
+    if (!stiffness_cell_by_cell || needs_system_matrix || needs_mass_matrix)
+      {
+        dsp.reinit(locally_relevant_dofs.size(),
+                   locally_relevant_dofs.size(),
+                   locally_relevant_dofs);
+        DoFTools::make_sparsity_pattern(dof_handler,
+                                        dsp,
+                                        hanging_constraints,
+                                        true);
+        if (fault)
+          fault->add_sparsity(dsp);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   locally_owned_dofs,
+                                                   communicator,
+                                                   locally_relevant_dofs);
+      }
     // A scene pays only for what it uses: no mass matrix without inertia or
     // with lumping, no system matrix (hence no solver) in explicit runs.
     if (stiffness_cell_by_cell)
-      stiffness_matrix.clear();
+      {
+        stiffness_matrix.clear();
+        setup_cell_stiffness();
+      }
     else
       stiffness_matrix.reinit(locally_owned_dofs,
                               locally_owned_dofs,
                               dsp,
                               communicator);
-    if (scheme == Scheme::implicit_newmark && !use_lumped_mass)
+    if (needs_mass_matrix)
       mass_matrix.reinit(locally_owned_dofs,
                          locally_owned_dofs,
                          dsp,
                          communicator);
     else
       mass_matrix.clear();
-    if (scheme != Scheme::explicit_central_difference ||
-        time_parameters.loading_phase)
+    if (needs_system_matrix)
       system_matrix.reinit(locally_owned_dofs,
                            locally_owned_dofs,
                            dsp,

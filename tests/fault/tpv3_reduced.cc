@@ -1,4 +1,5 @@
-// A reduced TPV3 (prm/tpv3/tpv3.prm with 1000 m cells, 4 s) through the
+// A reduced TPV3 (prm/tpv3/tpv3.prm in a uniform 36 x 12 x 21 km box with
+// 1000 m cells instead of the graded box, 4 s) through the
 // whole benchmark pipeline: the run writes the station of the reference
 // solution, and contrib/compare-tpv3 compares it with the boundary-integral
 // reference. At 1000 m the cohesive zone is not resolved, so the rupture
@@ -30,6 +31,12 @@ main(int argc, char **argv)
                   "Output directory=tpv3",
                   "--set",
                   "Output/Output interval=-1",
+                  "--set",
+                  "Scene/Box/Lower corner=-18000, -6000, -10500",
+                  "--set",
+                  "Scene/Box/Upper corner=18000, 6000, 10500",
+                  "--set",
+                  "Scene/Box/Grading/Growth factor=1",
                   "--set",
                   "Scene/Box/Number of cells=36, 12, 21",
                   "--set",

@@ -95,6 +95,10 @@ main(int argc, char **argv)
   write("material_id.prm",
         base + "subsection Scene\n  subsection Box\n    set Layer interfaces "
                "= 500\n  end\nend\n");
+  write("grading_core.prm",
+        base + "subsection Scene\n  subsection Box\n    subsection Grading\n"
+               "      set Growth factor = 1.2\n      set Core lower corner = "
+               "-100, 0\n    end\n  end\nend\n");
   write("function.prm",
         base + "subsection Initial conditions\n  set Displacement = "
                "sin(q*x); 0\nend\n");
@@ -151,6 +155,7 @@ main(int argc, char **argv)
   check("boundary name the scene does not have", {"boundary_name.prm"});
   check("roller component that does not exist in 2-D", {"roller.prm"});
   check("material id without material", {"material_id.prm"});
+  check("graded box whose core leaves the box", {"grading_core.prm"});
   check("function with an unknown variable", {"function.prm"});
   check("fault plane that cuts through cells", {"fault_plane.prm"});
   check("negative fault penalty", {"fault_penalty.prm"});

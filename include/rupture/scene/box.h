@@ -16,6 +16,10 @@ namespace rupture
      * material. Boundaries are named west/east (x), south/north (y, 3-D
      * only) and bottom/top (the last coordinate, which points up). Layers
      * are numbered from the top: material id 0 is the top layer.
+     *
+     * A graded box has uniform cells only in a core (around a fault, say)
+     * and cells that grow geometrically from the core to the box faces, so
+     * that absorbing boundaries can be far away at little cost.
      */
     template <int dim>
     class Box : public Interface<dim>
@@ -40,6 +44,14 @@ namespace rupture
       std::vector<unsigned int> n_cells;
       /// Interfaces between layers, as values of the last coordinate.
       std::vector<double> layer_interfaces;
+      /// Grading: growth factor (1: uniform) and the uniform core.
+      double     growth_factor;
+      Point<dim> core_lower;
+      Point<dim> core_upper;
+
+      /// Cell sizes along direction d of a graded box.
+      std::vector<double>
+      graded_steps(const unsigned int d) const;
     };
   } // namespace Scene
 } // namespace rupture

@@ -178,6 +178,9 @@ namespace rupture
     /// y = K x, with the stored matrix or cell by cell.
     void
     apply_stiffness(const VectorType &x, VectorType &y) const;
+    /// The element matrices and DoF lists of the cell-by-cell operator.
+    void
+    setup_cell_stiffness();
     /// Call @p action with the DoF indices, the stiffness matrix and (if
     /// @p with_mass) the consistent mass matrix of each locally owned cell.
     void
@@ -215,18 +218,21 @@ namespace rupture
     mutable TimerOutput timer;
 
     // Parameters.
-    std::string                 output_directory;
-    bool                        test_mode;
-    unsigned int                n_global_refinements;
-    unsigned int                fe_degree;
-    bool                        use_lumped_mass;
-    bool                        stiffness_cell_by_cell = false;
-    double                      rayleigh_alpha;
-    double                      rayleigh_beta;
-    double                      gravity;
-    double                      output_interval;
-    unsigned int                screen_interval;
-    TimeIntegration::Parameters time_parameters;
+    std::string  output_directory;
+    bool         test_mode;
+    unsigned int n_global_refinements;
+    unsigned int fe_degree;
+    bool         use_lumped_mass;
+    bool         stiffness_cell_by_cell = false;
+    /// The cell-by-cell stiffness operator (assembly.cc), if used.
+    struct CellStiffness;
+    std::shared_ptr<CellStiffness> cell_stiffness;
+    double                         rayleigh_alpha;
+    double                         rayleigh_beta;
+    double                         gravity;
+    double                         output_interval;
+    unsigned int                   screen_interval;
+    TimeIntegration::Parameters    time_parameters;
     /// The scheme of the phase being run.
     TimeIntegration::Scheme              current_scheme;
     std::unique_ptr<FunctionParser<dim>> body_force;
