@@ -36,14 +36,17 @@ namespace rupture
       {
         prm.declare_entry("Linear solver",
                           "automatic",
-                          Patterns::Selection("automatic|CG|GMRES|direct"),
+                          Patterns::Selection(
+                            "automatic|CG|GMRES|direct|MUMPS"),
                           "Krylov method: 'automatic' uses CG for symmetric "
                           "positive definite systems and GMRES otherwise. "
-                          "'direct' factorises the matrix (MUMPS through "
-                          "Trilinos Amesos): robust, and the fastest for "
-                          "small models (up to some 1e5 DoFs; 4 times "
-                          "faster than GMRES on "
-                          "northeast-japan-fault-coarse.prm), but its memory "
+                          "'direct' factorises the matrix (KLU through "
+                          "Trilinos Amesos): robust and reproducible, but "
+                          "slow in 3-D. 'MUMPS' is the multifrontal direct "
+                          "solver MUMPS: the fastest for small models (up to "
+                          "some 1e5 DoFs; 4 times faster than GMRES on "
+                          "northeast-japan-fault-coarse.prm), but on several "
+                          "ranks not bitwise reproducible, and its memory "
                           "grows fast with the model.");
         prm.declare_entry(
           "AMG aggregation",
@@ -140,7 +143,8 @@ namespace rupture
       const bool has_pairs =
         Utilities::MPI::sum(pairs.size(), communicator) > 0;
       penalty_fault = has_pairs;
-      if (!use_pair_transform || solver_type == "direct" || !has_pairs)
+      if (!use_pair_transform || solver_type == "direct" ||
+          solver_type == "MUMPS" || !has_pairs)
         return;
 
       // T is the identity except on the pairs, whose rows may belong to
@@ -195,7 +199,7 @@ namespace rupture
     {
       use_cg =
         (solver_type == "CG" || (solver_type == "automatic" && symmetric));
-      if (solver_type == "direct")
+      if (solver_type == "direct" || solver_type == "MUMPS")
         return;
 
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
@@ -269,13 +273,13 @@ namespace rupture
                         const TrilinosWrappers::MPI::Vector  &b) const
     {
       const double b_norm = b.l2_norm();
-      if (solver_type == "direct")
+      if (solver_type == "direct" || solver_type == "MUMPS")
         {
           SolverControl                  control(1, 0);
           TrilinosWrappers::SolverDirect direct(
             control,
-            TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                           "Amesos_Mumps"));
+            TrilinosWrappers::SolverDirect::AdditionalData(
+              false, solver_type == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu"));
           direct.solve(matrix, x, b);
           return 1;
         }
