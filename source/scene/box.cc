@@ -32,8 +32,10 @@ namespace rupture
                           "4",
                           Patterns::Anything(),
                           "Number of coarse cells in each direction, before "
-                          "<Mesh/Initial global refinement>: one integer per "
-                          "dimension, or a single one for all.");
+                          "<Discretization/Initial global refinement>: one "
+                          "integer per dimension, or a single one for all. "
+                          "In a graded box (<Grading/Growth factor> above 1) "
+                          "the number of uniform cells across the core.");
         prm.declare_entry(
           "Layer interfaces",
           "",
@@ -48,7 +50,9 @@ namespace rupture
             "Growth factor",
             "1",
             Patterns::Double(1, 2),
-            "1 (the default) gives uniform cells. Above 1 only the core "
+            "1 (the default) gives uniform cells over the whole box (the "
+            "core corners are then not used, so a graded box is switched off "
+            "by this entry alone). Above 1 only the core "
             "(<Core lower corner> to <Core upper corner>) has uniform cells, "
             "<Number of cells> across it; outside the core each cell is this "
             "factor larger than its neighbour towards the core, up to the "

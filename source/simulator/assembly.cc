@@ -60,6 +60,26 @@ namespace rupture
               }
         }
     }
+
+    /**
+     * What makes two cells have the same element matrices: material, FE
+     * (side of the fault) and the vertex offsets from vertex 0, rounded to
+     * multiples of @p unit. Cells that are translates of each other share a
+     * key.
+     */
+    template <typename CellIterator>
+    std::vector<std::int64_t>
+    cell_shape_key(const CellIterator &cell, const double unit)
+    {
+      std::vector<std::int64_t> key = {
+        static_cast<std::int64_t>(cell->material_id()),
+        static_cast<std::int64_t>(cell->active_fe_index())};
+      for (const unsigned int v : cell->vertex_indices())
+        for (unsigned int d = 0; d < CellIterator::AccessorType::dimension; ++d)
+          key.push_back(
+            std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
+      return key;
+    }
   } // namespace
 
 
@@ -408,18 +428,12 @@ namespace rupture
     // cell took minutes on the full Northeast-Japan mesh. The offsets are
     // compared to 1e-7 of the smallest cell (a relative change of the
     // eigenvalue of that order).
-    std::map<std::vector<double>, double> seen;
-    std::vector<double>                   key;
+    std::map<std::vector<std::int64_t>, double> seen;
     const double unit = 1e-7 * GridTools::minimal_cell_diameter(triangulation);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          key.assign({static_cast<double>(cell->material_id()),
-                      static_cast<double>(cell->active_fe_index())});
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              key.push_back(
-                std::round((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
+          const auto key = cell_shape_key(cell, unit);
           if (const auto known = seen.find(key); known != seen.end())
             {
               omega2_max = std::max(omega2_max, known->second);
@@ -495,10 +509,9 @@ namespace rupture
   /**
    * The cell-by-cell stiffness operator: for each locally owned cell its
    * DoFs (as local indices of a vector with ghosts) and its element matrix.
-   * Cells of the same material, element and shape (vertex offsets equal to
-   * 1e-9 of the cell diameter) share one stored matrix; once
-   * max_matrices distinct ones are stored, the element matrices of further
-   * shapes are recomputed at each product.
+   * Cells with the same shape key (offsets to 1e-10 of the smallest cell)
+   * share one stored matrix; once one matrix per 8 cells is stored, the
+   * element matrices of further shapes are recomputed at each use.
    */
   template <int dim>
   struct Simulator<dim>::CellStiffness
@@ -522,8 +535,10 @@ namespace rupture
     TimerOutput::Scope t(timer, "Cell stiffness set-up");
     cell_stiffness.reset();
     // With hanging nodes the products go through the constraints, cell by
-    // cell, with recomputed element matrices (apply_stiffness).
-    if (hanging_constraints.n_constraints() > 0)
+    // cell, with recomputed element matrices (apply_stiffness). Decided
+    // together, since the set-up below is collective.
+    if (dealii::Utilities::MPI::max(
+          hanging_constraints.n_constraints() > 0 ? 1u : 0u, communicator) > 0)
       return;
     auto       cs   = std::make_shared<CellStiffness>();
     const auto part = std::make_shared<dealii::Utilities::MPI::Partitioner>(
@@ -534,6 +549,7 @@ namespace rupture
     const std::size_t max_matrices =
       std::max<std::size_t>(64,
                             triangulation.n_locally_owned_active_cells() / 8);
+    const double unit = 1e-10 * GridTools::minimal_cell_diameter(triangulation);
     std::map<std::vector<std::int64_t>, unsigned int> shapes;
     const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
     hp::FEValues<dim>                    hp_values(fe_collection,
@@ -541,7 +557,6 @@ namespace rupture
                                 update_values | update_gradients |
                                   update_JxW_values);
     std::vector<types::global_dof_index> dofs;
-    std::vector<std::int64_t>            key;
     cs->offsets.push_back(0);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -552,24 +567,15 @@ namespace rupture
             cs->local_dofs.push_back(part->global_to_local(dof));
           cs->offsets.push_back(cs->local_dofs.size());
 
-          const double unit = 1e-9 * cell->diameter();
-          key               = {static_cast<std::int64_t>(cell->material_id()),
-                               static_cast<std::int64_t>(cell->active_fe_index())};
-          for (const auto v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              key.push_back(
-                std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
-          key.push_back(std::llround(cell->diameter() * 1e6));
+          const auto key   = cell_shape_key(cell, unit);
           const auto found = shapes.find(key);
           if (found != shapes.end())
             cs->matrix_index.push_back(found->second);
           else if (cs->matrices.size() < max_matrices)
             {
               hp_values.reinit(cell);
-              const FEValues<dim> &fe_values =
-                hp_values.get_present_fe_values();
               FullMatrix<double> k(dofs.size(), dofs.size());
-              local_elasticity_matrices<dim>(fe_values,
+              local_elasticity_matrices<dim>(hp_values.get_present_fe_values(),
                                              FEValuesExtractors::Vector(
                                                cell->active_fe_index() * dim),
                                              materials.get(cell->material_id()),
@@ -598,6 +604,45 @@ namespace rupture
 
 
   template <int dim>
+  template <typename Action>
+  void
+  Simulator<dim>::for_each_stored_cell_matrix(const Action &action) const
+  {
+    const CellStiffness               &cs = *cell_stiffness;
+    std::unique_ptr<hp::FEValues<dim>> hp_values;
+    FullMatrix<double>                 k;
+    auto                               recomputed = cs.recomputed.begin();
+    for (unsigned int c = 0; c + 1 < cs.offsets.size(); ++c)
+      {
+        const unsigned int  begin = cs.offsets[c];
+        const unsigned int  n     = cs.offsets[c + 1] - begin;
+        const unsigned int *dofs  = cs.local_dofs.data() + begin;
+        if (cs.matrix_index[c] != CellStiffness::recompute)
+          {
+            action(dofs, n, cs.matrices[cs.matrix_index[c]]);
+            continue;
+          }
+        if (!hp_values)
+          hp_values = std::make_unique<hp::FEValues<dim>>(
+            fe_collection,
+            hp::QCollection<dim>(QGauss<dim>(fe_degree + 1)),
+            update_values | update_gradients | update_JxW_values);
+        const auto &cell = *recomputed++;
+        hp_values->reinit(cell);
+        k.reinit(n, n);
+        local_elasticity_matrices<dim>(hp_values->get_present_fe_values(),
+                                       FEValuesExtractors::Vector(
+                                         cell->active_fe_index() * dim),
+                                       materials.get(cell->material_id()),
+                                       k,
+                                       nullptr);
+        action(dofs, n, k);
+      }
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::apply_stiffness(const VectorType &x, VectorType &y) const
   {
@@ -606,9 +651,9 @@ namespace rupture
         stiffness_matrix.vmult(y, x);
         return;
       }
+    TimerOutput::Scope t(timer, "Stiffness product cell by cell");
     if (cell_stiffness)
       {
-        TimerOutput::Scope   t(timer, "Stiffness product cell by cell");
         const CellStiffness &cs = *cell_stiffness;
         // Both vectors number their owned entries in increasing global
         // order, so the owned parts copy one to one.
@@ -620,63 +665,28 @@ namespace rupture
           cs.x.local_element(i) = xs[i];
         cs.x.update_ghost_values();
         cs.y = 0;
-
-        hp::FEValues<dim>                 *hp_values = nullptr;
-        std::unique_ptr<hp::FEValues<dim>> hp_storage;
-        const hp::QCollection<dim>         q_cells(QGauss<dim>(fe_degree + 1));
-        FullMatrix<double>                 k;
-        std::vector<double>                local_x;
-        auto                               recomputed = cs.recomputed.begin();
-        for (unsigned int c = 0; c + 1 < cs.offsets.size(); ++c)
-          {
-            const unsigned int        begin = cs.offsets[c];
-            const unsigned int        n     = cs.offsets[c + 1] - begin;
-            const unsigned int       *dofs  = cs.local_dofs.data() + begin;
-            const FullMatrix<double> *matrix;
-            if (cs.matrix_index[c] != CellStiffness::recompute)
-              matrix = &cs.matrices[cs.matrix_index[c]];
-            else
-              {
-                if (!hp_values)
-                  {
-                    hp_storage =
-                      std::make_unique<hp::FEValues<dim>>(fe_collection,
-                                                          q_cells,
-                                                          update_values |
-                                                            update_gradients |
-                                                            update_JxW_values);
-                    hp_values = hp_storage.get();
-                  }
-                const auto &cell = *recomputed++;
-                hp_values->reinit(cell);
-                k.reinit(n, n);
-                local_elasticity_matrices<dim>(
-                  hp_values->get_present_fe_values(),
-                  FEValuesExtractors::Vector(cell->active_fe_index() * dim),
-                  materials.get(cell->material_id()),
-                  k,
-                  nullptr);
-                matrix = &k;
-              }
-            local_x.resize(n);
-            for (unsigned int i = 0; i < n; ++i)
-              local_x[i] = cs.x.local_element(dofs[i]);
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                const double *row = &(*matrix)(i, 0);
-                double        sum = 0;
-                for (unsigned int j = 0; j < n; ++j)
-                  sum += row[j] * local_x[j];
-                cs.y.local_element(dofs[i]) += sum;
-              }
-          }
+        std::vector<double> local_x;
+        for_each_stored_cell_matrix([&](const unsigned int       *dofs,
+                                        const unsigned int        n,
+                                        const FullMatrix<double> &k) {
+          local_x.resize(n);
+          for (unsigned int i = 0; i < n; ++i)
+            local_x[i] = cs.x.local_element(dofs[i]);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              const double *row = &k(i, 0);
+              double        sum = 0;
+              for (unsigned int j = 0; j < n; ++j)
+                sum += row[j] * local_x[j];
+              cs.y.local_element(dofs[i]) += sum;
+            }
+        });
         cs.y.compress(VectorOperation::add);
         double *ys = y.trilinos_vector()[0];
         for (unsigned int i = 0; i < n_owned; ++i)
           ys[i] = cs.y.local_element(i);
         return;
       }
-    TimerOutput::Scope t(timer, "Stiffness product cell by cell");
     VectorType x_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
     x_ghost = x;
     y       = 0;
@@ -706,13 +716,28 @@ namespace rupture
                              FullMatrix<double> &,
                              const FullMatrix<double> &)> &action) const
   {
-    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>                    hp_values(fe_collection,
+    std::vector<types::global_dof_index> dofs;
+    FullMatrix<double>                   k, mass;
+    if (cell_stiffness && !with_mass)
+      {
+        // The stored element matrices (copied: the action may scale them).
+        const auto &part = *cell_stiffness->x.get_partitioner();
+        for_each_stored_cell_matrix([&](const unsigned int       *local,
+                                        const unsigned int        n,
+                                        const FullMatrix<double> &stored) {
+          dofs.resize(n);
+          for (unsigned int i = 0; i < n; ++i)
+            dofs[i] = part.local_to_global(local[i]);
+          k = stored;
+          action(dofs, k, mass);
+        });
+        return;
+      }
+    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>          hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);
-    FullMatrix<double>                   k, mass;
-    std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {

@@ -181,6 +181,13 @@ namespace rupture
     /// The element matrices and DoF lists of the cell-by-cell operator.
     void
     setup_cell_stiffness();
+    /// Call @p action with the local DoF indices, their number and the
+    /// element stiffness of each locally owned cell of the cell-by-cell
+    /// operator (stored or recomputed). A template (defined and used in
+    /// assembly.cc only), so that the action inlines into the loop.
+    template <typename Action>
+    void
+    for_each_stored_cell_matrix(const Action &action) const;
     /// Call @p action with the DoF indices, the stiffness matrix and (if
     /// @p with_mass) the consistent mass matrix of each locally owned cell.
     void
