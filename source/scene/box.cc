@@ -2,6 +2,7 @@
 #include <rupture/scene/box.h>
 
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
 #include <cmath>
@@ -206,6 +207,27 @@ namespace rupture
             steps[d] = graded_steps(d);
           GridGenerator::subdivided_hyper_rectangle(
             triangulation, steps, lower_corner, upper_corner, true);
+          // The vertices are sums of the cell sizes from the lower corner,
+          // so the round-off of the scaled outer cells shifts the core's
+          // vertices by some 1e-12 m. Put them exactly on the core's grid:
+          // a region given as "abs(x) <= 1500" must contain the vertex at
+          // 1500 whatever the grading (TPV3's nucleation patch lost its
+          // edge nodes at 250 m before).
+          GridTools::transform(
+            [this](const Point<dim> &p) {
+              Point<dim> q = p;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  const double h = (core_upper[d] - core_lower[d]) / n_cells[d];
+                  const double i = std::round((p[d] - core_lower[d]) / h);
+                  if (i >= 0 && i <= n_cells[d] &&
+                      std::abs(p[d] - (core_lower[d] + i * h)) <= 1e-6 * h)
+                    q[d] =
+                      (i == n_cells[d]) ? core_upper[d] : core_lower[d] + i * h;
+                }
+              return q;
+            },
+            triangulation);
           // Colorizing numbers the boundaries, but also sets material ids.
           for (const auto &cell : triangulation.active_cell_iterators())
             cell->set_material_id(0);

@@ -192,12 +192,34 @@ namespace rupture
                         "When Newton's method fails in an implicit step, "
                         "the step is redone as two half steps, recursively, "
                         "up to this many times; then the run stops with a "
-                        "diagnosis. 0 stops at the first failure.");
+                        "diagnosis. 0 stops at the first failure. After a "
+                        "cut, the following steps are taken as sub-steps of "
+                        "the size that converged, which double again after "
+                        "two steps without a cut; the output times stay "
+                        "those of <Time integration/Time step>.");
       prm.declare_entry("Maximum Newton iterations",
                         "25",
                         Patterns::Integer(1),
                         "A step that has not converged after this many "
                         "Newton iterations stops the run with a diagnosis.");
+      prm.declare_entry("Print Newton iterations",
+                        "false",
+                        Patterns::Bool(),
+                        "Print every Newton iteration: the force residual "
+                        "relative to its first value, the line-search step "
+                        "length, the numbers of slipping and open fault "
+                        "nodes, and a hash of the pattern of stick, slip "
+                        "and open nodes (a repeating hash means cycling).");
+      prm.declare_entry(
+        "Newton stall iterations",
+        "6",
+        Patterns::Integer(0),
+        "Newton's method gives up on a step as soon as its force residual "
+        "has not fallen below half of its best earlier value within this "
+        "many iterations (it cycles, typically because a few fault nodes "
+        "switch back and forth between stick and slip), so that the step is "
+        "cut without iterating up to <Maximum Newton iterations>. 0 never "
+        "gives up early.");
     }
     prm.leave_subsection();
   }
@@ -328,8 +350,10 @@ namespace rupture
     newton_force_tolerance = prm.get_double("Newton force tolerance");
     newton_displacement_tolerance =
       prm.get_double("Newton displacement tolerance");
-    max_newton_iterations = prm.get_integer("Maximum Newton iterations");
-    max_step_cuts         = prm.get_integer("Maximum step cuts");
+    max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
+    max_step_cuts           = prm.get_integer("Maximum step cuts");
+    newton_stall_iterations = prm.get_integer("Newton stall iterations");
+    print_newton_iterations = prm.get_bool("Print Newton iterations");
     prm.leave_subsection();
 
     time_parameters.parse_parameters(prm);
@@ -819,6 +843,8 @@ namespace rupture
       std::ceil((end_time - start) / time_step - 1e-9));
     pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
           << n_steps << " steps to t = " << end_time << " s\n";
+    substep_depth     = 0;
+    steps_without_cut = 0;
 
     for (unsigned int i = 1; i <= n_steps; ++i)
       {

@@ -439,6 +439,9 @@ namespace rupture
     double        increment_norm = 0;
     unsigned long last_signature = 0;
     last_linear_iterations       = 0;
+    std::vector<double>        norms;
+    unsigned long              signature_of_iteration = 0;
+    std::vector<unsigned long> signatures;
     for (unsigned int k = 0;; ++k)
       {
         update_rates();
@@ -486,17 +489,46 @@ namespace rupture
                 if (force_ok && (displacement_ok || linear))
                   break;
               }
-            if (k == max_newton_iterations)
+            // A step whose residual has not halved in the last <Newton
+            // stall iterations> iterations is cycling (typically a few
+            // nodes switching between stick and slip): give up at once, so
+            // that the step is cut instead of iterating to the limit.
+            norms.push_back(norm);
+            signatures.push_back(signature);
+            const unsigned int window = newton_stall_iterations;
+            const bool         stalled =
+              (window > 0) && (norms.size() > window) &&
+              (*std::min_element(norms.end() - window, norms.end()) >
+               0.5 * *std::min_element(norms.begin(), norms.end() - window));
+            if (k == max_newton_iterations || stalled)
               {
                 const Fault::Statistics f = fault->statistics();
                 std::ostringstream      message;
                 message << "Newton's method did not converge in step " << step
-                        << " (t = " << time << " s) within "
-                        << max_newton_iterations
-                        << " iterations: the force residual fell to "
-                        << norm / reference << " of its first value (wanted "
-                        << newton_force_tolerance << "), with " << f.n_slipping
-                        << " slipping and " << f.n_open
+                        << " (t = " << time << " s): ";
+                if (stalled)
+                  {
+                    std::vector<unsigned long> recent(signatures.end() - window,
+                                                      signatures.end());
+                    std::sort(recent.begin(), recent.end());
+                    const auto patterns =
+                      std::unique(recent.begin(), recent.end()) -
+                      recent.begin();
+                    message << "the force residual stalled at "
+                            << norm / reference
+                            << " of its first value (wanted "
+                            << newton_force_tolerance
+                            << ") and did not halve in the last " << window
+                            << " iterations, which went through " << patterns
+                            << " different patterns of stick, slip and open "
+                               "fault nodes";
+                  }
+                else
+                  message << "within " << max_newton_iterations
+                          << " iterations the force residual fell to "
+                          << norm / reference << " of its first value (wanted "
+                          << newton_force_tolerance << ")";
+                message << "; " << f.n_slipping << " slipping and " << f.n_open
                         << " open fault nodes. ";
                 if (f.unstable_softening)
                   message << "Slip weakening is steeper than the tangential "
@@ -506,14 +538,18 @@ namespace rupture
                              "or L_d, or reduce the time step.";
                 else
                   message << "Reduce <Time integration/Time step>, or raise "
-                             "<Solver/Maximum Newton iterations>.";
-                throw NewtonFailure(message.str());
+                             "<Solver/Maximum Newton iterations> (or "
+                             "<Solver/Newton stall iterations>).";
+                throw NewtonFailure(message.str(),
+                                    stalled ? "the residual stalled" :
+                                              "too many iterations");
               }
             last_signature = signature;
           }
 
         if (fault)
           {
+            signature_of_iteration = fault->status_signature();
             // Effective stiffness plus the contact tangent (nonsymmetric
             // where nodes slip), for this iteration only.
             scratch = 0;
@@ -566,6 +602,16 @@ namespace rupture
                 alpha *= 0.5;
               }
             increment *= alpha;
+            if (print_newton_iterations)
+              {
+                const Fault::Statistics f = fault->statistics();
+                pcout << "      Newton " << k << ": residual "
+                      << norm / reference << ", line search " << alpha << ", "
+                      << f.n_slipping << " slipping, " << f.n_open
+                      << " open, pattern " << std::hex
+                      << (signature_of_iteration & 0xffffff) << std::dec
+                      << "\n";
+              }
           }
         else
           displacement += increment;
@@ -584,6 +630,9 @@ namespace rupture
     // Try the step; if Newton's method fails, redo it as two half steps,
     // recursively, up to <Solver/Maximum step cuts> times. The fault state
     // and the energy budget change only when a (sub)step has converged.
+    // After a cut the following steps start from the sub-step size that
+    // converged (a step that failed at full size tends to fail again in the
+    // next one), and double it again after two steps without a cut.
     const double end = time, dt = time_step;
     const auto   set_step = [&](const double h) {
       time_step = h;
@@ -594,6 +643,8 @@ namespace rupture
                              c.a0 + c.a1 * rayleigh_alpha,
                              c.a1);
     };
+    unsigned int                                      deepest = 0;
+    bool                                              cut     = false;
     std::function<void(double, double, unsigned int)> attempt =
       [&](const double t_start, const double h, const unsigned int depth) {
         const VectorType u(displacement), v(velocity), a(acceleration);
@@ -605,24 +656,44 @@ namespace rupture
         try
           {
             implicit_substep();
+            deepest = std::max(deepest, depth);
           }
         catch (const NewtonFailure &failure)
           {
             if (depth == max_step_cuts)
               throw NewtonFailure(std::string(failure.what()) +
-                                  " The step was cut " + std::to_string(depth) +
-                                  " times (<Solver/Maximum step cuts>).");
+                                    " The step was cut " +
+                                    std::to_string(depth) +
+                                    " times (<Solver/Maximum step cuts>).",
+                                  failure.reason);
             displacement = u;
             velocity     = v;
             acceleration = a;
-            pcout << "    Newton failed with dt = " << h
-                  << " s: the step is cut in half\n";
+            pcout << "    Newton failed with dt = " << h << " s ("
+                  << failure.reason << "): the step is cut in half\n";
             ++n_step_cuts;
+            cut = true;
             attempt(t_start, h / 2, depth + 1);
             attempt(t_start + h / 2, h / 2, depth + 1);
           }
       };
-    attempt(end - dt, dt, 0);
+    const unsigned int start_depth = std::min(substep_depth, max_step_cuts);
+    const unsigned int n_substeps  = 1u << start_depth;
+    if (n_substeps > 1)
+      pcout << "    taken as " << n_substeps << " sub-steps of "
+            << dt / n_substeps << " s after an earlier step cut\n";
+    for (unsigned int i = 0; i < n_substeps; ++i)
+      attempt(end - dt + i * (dt / n_substeps), dt / n_substeps, start_depth);
+    if (cut)
+      {
+        substep_depth     = deepest;
+        steps_without_cut = 0;
+      }
+    else if (substep_depth > 0 && ++steps_without_cut >= 2)
+      {
+        --substep_depth;
+        steps_without_cut = 0;
+      }
     if (time_step != dt)
       set_step(dt);
     time = end;

@@ -127,7 +127,12 @@ namespace rupture
     /// Newton's method did not converge (the step may be cut).
     struct NewtonFailure : public std::runtime_error
     {
-      using std::runtime_error::runtime_error;
+      NewtonFailure(const std::string &message, const std::string &reason = "")
+        : std::runtime_error(message)
+        , reason(reason)
+      {}
+      /// A few words for the screen when the step is cut.
+      std::string reason;
     };
     void
     explicit_step();
@@ -332,8 +337,14 @@ namespace rupture
     unsigned int  max_newton_iterations;
     unsigned int  max_step_cuts;
     unsigned int  n_step_cuts = 0;
-    double        wall_time_start;
-    double        next_output_time;
+    unsigned int  newton_stall_iterations;
+    bool          print_newton_iterations;
+    /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
+    /// a step cut, lowered again after two steps without one.
+    unsigned int substep_depth     = 0;
+    unsigned int steps_without_cut = 0;
+    double       wall_time_start;
+    double       next_output_time;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     Output::Statistics                         statistics;
