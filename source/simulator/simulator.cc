@@ -218,8 +218,10 @@ namespace rupture
         "has not fallen below half of its best earlier value within this "
         "many iterations (it cycles, typically because a few fault nodes "
         "switch back and forth between stick and slip), so that the step is "
-        "cut without iterating up to <Maximum Newton iterations>. 0 never "
-        "gives up early.");
+        "cut without iterating up to <Maximum Newton iterations>. Only in "
+        "implicit dynamic steps that can still be cut (not in quasi-static "
+        "steps, nor after <Maximum step cuts> cuts). 0 never gives up "
+        "early.");
     }
     prm.leave_subsection();
   }

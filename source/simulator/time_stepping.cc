@@ -492,12 +492,14 @@ namespace rupture
             // A step whose residual has not halved in the last <Newton
             // stall iterations> iterations is cycling (typically a few
             // nodes switching between stick and slip): give up at once, so
-            // that the step is cut instead of iterating to the limit.
+            // that the step is cut instead of iterating to the limit (only
+            // where it can be cut: not in quasi-static steps, nor at the
+            // last level of cuts).
             norms.push_back(norm);
             signatures.push_back(signature);
             const unsigned int window = newton_stall_iterations;
             const bool         stalled =
-              (window > 0) && (norms.size() > window) &&
+              newton_may_cut && (window > 0) && (norms.size() > window) &&
               (*std::min_element(norms.end() - window, norms.end()) >
                0.5 * *std::min_element(norms.begin(), norms.end() - window));
             if (k == max_newton_iterations || stalled)
@@ -653,13 +655,18 @@ namespace rupture
         time = t_start + h;
         if (fault)
           fault->set_time(time);
+        // Give up early on a stalled Newton iteration only where the
+        // step can still be cut; at the last level it iterates on.
+        newton_may_cut = (depth < max_step_cuts);
         try
           {
             implicit_substep();
-            deepest = std::max(deepest, depth);
+            newton_may_cut = false;
+            deepest        = std::max(deepest, depth);
           }
         catch (const NewtonFailure &failure)
           {
+            newton_may_cut = false;
             if (depth == max_step_cuts)
               throw NewtonFailure(std::string(failure.what()) +
                                     " The step was cut " +

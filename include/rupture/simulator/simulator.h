@@ -338,7 +338,9 @@ namespace rupture
     unsigned int  max_step_cuts;
     unsigned int  n_step_cuts = 0;
     unsigned int  newton_stall_iterations;
-    bool          print_newton_iterations;
+    /// Whether a stalled Newton iteration may give up (the step can be cut).
+    bool newton_may_cut = false;
+    bool print_newton_iterations;
     /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
     /// a step cut, lowered again after two steps without one.
     unsigned int substep_depth     = 0;
