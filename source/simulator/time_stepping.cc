@@ -440,7 +440,6 @@ namespace rupture
     unsigned long last_signature = 0;
     last_linear_iterations       = 0;
     std::vector<double>        norms;
-    unsigned long              signature_of_iteration = 0;
     std::vector<unsigned long> signatures;
     for (unsigned int k = 0;; ++k)
       {
@@ -551,7 +550,6 @@ namespace rupture
 
         if (fault)
           {
-            signature_of_iteration = fault->status_signature();
             // Effective stiffness plus the contact tangent (nonsymmetric
             // where nodes slip), for this iteration only.
             scratch = 0;
@@ -611,8 +609,7 @@ namespace rupture
                       << norm / reference << ", line search " << alpha << ", "
                       << f.n_slipping << " slipping, " << f.n_open
                       << " open, pattern " << std::hex
-                      << (signature_of_iteration & 0xffffff) << std::dec
-                      << "\n";
+                      << (signatures.back() & 0xffffff) << std::dec << "\n";
               }
           }
         else
