@@ -576,6 +576,9 @@ namespace rupture
                          communicator);
     else
       mass_matrix.clear();
+    // The preconditioner and the direct solver's factors refer to the old
+    // matrix.
+    linear_solver.clear();
     if (needs_system_matrix)
       system_matrix.reinit(locally_owned_dofs,
                            locally_owned_dofs,

@@ -435,10 +435,11 @@ namespace rupture
     add_kinematic_increment(displacement);
     hanging_constraints.distribute(displacement);
 
-    double        reference      = 0;
-    double        increment_norm = 0;
-    unsigned long last_signature = 0;
-    last_linear_iterations       = 0;
+    double        reference         = 0;
+    double        increment_norm    = 0;
+    unsigned long last_signature    = 0;
+    unsigned int  linear_iterations = 0;
+    last_linear_iterations          = 0;
     std::vector<double>        norms;
     std::vector<unsigned long> signatures;
     for (unsigned int k = 0;; ++k)
@@ -573,8 +574,9 @@ namespace rupture
         increment = 0;
         {
           TimerOutput::Scope t(timer, "Linear solve");
-          last_linear_iterations +=
+          linear_iterations =
             linear_solver.solve(system_matrix, increment, free_residual);
+          last_linear_iterations += linear_iterations;
         }
         if (fault)
           {
@@ -606,10 +608,15 @@ namespace rupture
               {
                 const Fault::Statistics f = fault->statistics();
                 pcout << "      Newton " << k << ": residual "
-                      << norm / reference << ", line search " << alpha << ", "
-                      << f.n_slipping << " slipping, " << f.n_open
-                      << " open, pattern " << std::hex
-                      << (signatures.back() & 0xffffff) << std::dec << "\n";
+                      << norm / reference
+                      << ", linear solve: " << linear_iterations
+                      << " iterations, residual "
+                      << linear_solver.last_relative_residual()
+                      << ", factorisations " << linear_solver.n_factorizations()
+                      << ", line search " << alpha << ", " << f.n_slipping
+                      << " slipping, " << f.n_open << " open, pattern "
+                      << std::hex << (signatures.back() & 0xffffff) << std::dec
+                      << "\n";
               }
           }
         else

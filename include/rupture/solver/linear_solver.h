@@ -11,6 +11,8 @@
 #include <vector>
 
 class Epetra_CrsMatrix;
+class Epetra_LinearProblem;
+class Amesos_BaseSolver;
 
 namespace rupture
 {
@@ -52,7 +54,14 @@ namespace rupture
       unsigned int
       solve(const TrilinosWrappers::SparseMatrix &matrix,
             TrilinosWrappers::MPI::Vector        &x,
-            const TrilinosWrappers::MPI::Vector  &b) const;
+            const TrilinosWrappers::MPI::Vector  &b);
+
+      /// Numeric factorisations done by the direct solvers so far.
+      unsigned int
+      n_factorizations() const
+      {
+        return factorizations;
+      }
 
       /**
        * The DoF pairs (minus side, plus side) of the split fault nodes that
@@ -78,11 +87,9 @@ namespace rupture
        * the matrix, so this must run before the matrix is destroyed.
        */
       void
-      clear()
-      {
-        amg.reset();
-        transformed.reset();
-      }
+      clear();
+
+      LinearSolver();
 
       ~LinearSolver();
 
@@ -103,6 +110,17 @@ namespace rupture
         return relative_tolerance;
       }
 
+      /**
+       * The relative residual |b - A x| / |b| of the last solve, as
+       * checked after it (for the direct solvers, after iterative
+       * refinement).
+       */
+      double
+      last_relative_residual() const
+      {
+        return last_residual;
+      }
+
     private:
       std::string  solver_type;
       std::string  aggregation           = "uncoupled";
@@ -119,6 +137,23 @@ namespace rupture
       std::unique_ptr<TrilinosWrappers::SparseMatrix> transform;
       /// T A T of the last initialize(), which the AMG refers to.
       std::unique_ptr<Epetra_CrsMatrix> transformed;
+      /**
+       * The direct solvers: the factorisation of the last initialize(). Its
+       * symbolic part (ordering, elimination tree) is kept while the matrix
+       * object and its number of nonzeros stay the same; only the numeric
+       * factorisation is redone.
+       */
+      std::unique_ptr<Epetra_LinearProblem> direct_problem;
+      std::unique_ptr<Amesos_BaseSolver>    direct_solver;
+      const Epetra_CrsMatrix               *factored_matrix  = nullptr;
+      int                                   factored_entries = -1;
+      /// Refinement steps of a direct solve (see solve()).
+      unsigned int refinement_steps = 2;
+      unsigned int factorizations   = 0;
+      double       last_residual    = 0;
+      /// Numeric factorisation of the matrix set up in initialize().
+      void
+      factorize();
     };
   } // namespace Solver
 } // namespace rupture
