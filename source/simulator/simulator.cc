@@ -211,6 +211,20 @@ namespace rupture
                         "nodes, and a hash of the pattern of stick, slip "
                         "and open nodes (a repeating hash means cycling).");
       prm.declare_entry(
+        "Newton predictor",
+        "old displacement",
+        Patterns::Selection(
+          "constant velocity|constant acceleration|old displacement"),
+        "Where Newton's method starts in an implicit dynamic step: the old "
+        "displacement moved on with the old velocity, u + dt v ('constant "
+        "velocity'), also with the old acceleration, u + dt v + dt^2/2 a "
+        "('constant acceleration'), or the old displacement itself ('old "
+        "displacement'). A sliding fault keeps sliding from a predictor "
+        "that moves on; from the old displacement every node starts stuck. "
+        "Which one needs fewer iterations depends on the model (measured "
+        "in doc/performance.md). Quasi-static steps start from the old "
+        "displacement.");
+      prm.declare_entry(
         "Newton stall iterations",
         "6",
         Patterns::Integer(0),
@@ -356,6 +370,7 @@ namespace rupture
     max_step_cuts           = prm.get_integer("Maximum step cuts");
     newton_stall_iterations = prm.get_integer("Newton stall iterations");
     print_newton_iterations = prm.get_bool("Print Newton iterations");
+    newton_predictor        = prm.get("Newton predictor");
     prm.leave_subsection();
 
     time_parameters.parse_parameters(prm);

@@ -427,11 +427,20 @@ namespace rupture
   Simulator<dim>::solve_step(const VectorType            &old_u,
                              const std::function<void()> &update_rates,
                              const std::function<void()> &compute_residual,
-                             VectorType                  &residual)
+                             VectorType                  &residual,
+                             const VectorType            *predicted_increment)
   {
     VectorType free_residual(residual), increment(residual), scratch(residual);
 
     displacement = old_u;
+    if (predicted_increment)
+      {
+        // Only at the free DoFs: the prescribed ones follow their boundary
+        // motion, the hanging ones their parents.
+        scratch = *predicted_increment;
+        increment_constraints.set_zero(scratch);
+        displacement += scratch;
+      }
     add_kinematic_increment(displacement);
     hanging_constraints.distribute(displacement);
 
@@ -756,7 +765,17 @@ namespace rupture
         }
     };
 
-    solve_step(old_u, update_rates, compute_residual, residual);
+    // The predictor: the old motion carried on over the step.
+    std::unique_ptr<VectorType> predicted;
+    if (newton_predictor != "old displacement")
+      {
+        predicted = std::make_unique<VectorType>(old_v);
+        *predicted *= time_step;
+        if (newton_predictor == "constant acceleration")
+          predicted->add(0.5 * time_step * time_step, old_a);
+      }
+    solve_step(
+      old_u, update_rates, compute_residual, residual, predicted.get());
     finish_step(old_u, load, residual, cv);
   }
 

@@ -143,13 +143,16 @@ namespace rupture
      * a fault, Newton's method (the paper's Fig. 6) with one. @p update_rates
      * sets velocity and acceleration from the displacement, and
      * @p compute_residual the residual f - M a - C v - K u - F_contact
-     * (unconstrained) and the damping force.
+     * (unconstrained) and the damping force. Newton's method starts from
+     * the old displacement plus @p predicted_increment (if given) at the
+     * unconstrained DoFs, and plus the prescribed boundary motion.
      */
     void
     solve_step(const VectorType            &old_displacement,
                const std::function<void()> &update_rates,
                const std::function<void()> &compute_residual,
-               VectorType                  &residual);
+               VectorType                  &residual,
+               const VectorType            *predicted_increment = nullptr);
     /**
      * Add the contact forces at the current displacement to @p force (and
      * @p sign times the contact tangent to the system matrix if asked).
@@ -341,6 +344,8 @@ namespace rupture
     /// Whether a stalled Newton iteration may give up (the step can be cut).
     bool newton_may_cut = false;
     bool print_newton_iterations;
+    /// <Solver/Newton predictor> of implicit dynamic steps.
+    std::string newton_predictor;
     /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
     /// a step cut, lowered again after two steps without one.
     unsigned int substep_depth     = 0;
