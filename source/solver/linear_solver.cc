@@ -388,9 +388,10 @@ namespace rupture
                 break;
               x.swap(y);
               r.swap(r_new);
-              const bool enough = (new_norm > 0.5 * r_norm);
-              r_norm            = new_norm;
-              if (enough)
+              // A step that gained less than a factor 2 ends the refinement.
+              const bool slow = (new_norm > 0.5 * r_norm);
+              r_norm          = new_norm;
+              if (slow)
                 break;
             }
           last_residual = r_norm / b_norm;
