@@ -6,11 +6,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <Amesos.h>
-#include <Amesos_BaseSolver.h>
 #include <EpetraExt_MatrixMatrix.h>
 #include <Epetra_CrsMatrix.h>
-#include <Epetra_LinearProblem.h>
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
@@ -155,10 +152,8 @@ namespace rupture
     {
       amg.reset();
       transformed.reset();
-      direct_solver.reset();
-      direct_problem.reset();
-      factored_matrix  = nullptr;
-      factored_entries = -1;
+      direct.reset();
+      direct_control.reset();
     }
 
 
@@ -233,31 +228,30 @@ namespace rupture
         (solver_type == "CG" || (solver_type == "automatic" && symmetric));
       if (solver_type == "direct" || solver_type == "MUMPS")
         {
-          // Factorise now; solve() only does the triangular solves. The
-          // ordering and symbolic factorisation are redone only for another
-          // matrix or sparsity pattern.
-          const Epetra_CrsMatrix &a = matrix.trilinos_matrix();
-          if (!direct_solver || factored_matrix != &a ||
-              factored_entries != a.NumGlobalNonzeros())
+          // Factorise now; solve() only does the triangular solves (deal.II's
+          // SolverDirect: Amesos KLU or MUMPS).
+          direct_control = std::make_unique<SolverControl>(1, 0);
+          direct         = std::make_unique<TrilinosWrappers::SolverDirect>(
+            *direct_control,
+            TrilinosWrappers::SolverDirect::AdditionalData(
+              false, solver_type == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu"));
+          try
             {
-              direct_solver.reset();
-              direct_problem = std::make_unique<Epetra_LinearProblem>();
-              direct_problem->SetOperator(const_cast<Epetra_CrsMatrix *>(&a));
-              Amesos      factory;
-              const char *name =
-                solver_type == "MUMPS" ? "Amesos_Mumps" : "Amesos_Klu";
-              AssertThrow(factory.Query(name),
-                          ExcMessage(
-                            std::string("Trilinos was built without ") + name +
-                            ", which <Solver/Linear solver> = " + solver_type +
-                            " needs."));
-              direct_solver.reset(factory.Create(name, *direct_problem));
-              const int ierr = direct_solver->SymbolicFactorization();
-              AssertThrow(ierr == 0, ExcTrilinosError(ierr));
-              factored_matrix  = &a;
-              factored_entries = a.NumGlobalNonzeros();
+              direct->initialize(matrix);
             }
-          factorize();
+          catch (const std::exception &)
+            {
+              direct.reset();
+              AssertThrow(false,
+                          ExcMessage(
+                            "The direct solver (<Solver/Linear solver> = " +
+                            solver_type +
+                            ") could not factorise the system matrix. Most "
+                            "likely it is singular: a part of the model is "
+                            "held by no boundary condition (or Trilinos was "
+                            "built without this solver)."));
+            }
+          ++factorizations;
           return;
         }
 
@@ -326,22 +320,6 @@ namespace rupture
 
 
 
-    void
-    LinearSolver::factorize()
-    {
-      const int ierr = direct_solver->NumericFactorization();
-      AssertThrow(ierr == 0,
-                  ExcMessage("The direct solver could not factorise the "
-                             "system matrix (Amesos error " +
-                             std::to_string(ierr) +
-                             "): it is singular, most likely because a "
-                             "part of the model is held by no boundary "
-                             "condition."));
-      ++factorizations;
-    }
-
-
-
     unsigned int
     LinearSolver::solve(const TrilinosWrappers::SparseMatrix &matrix,
                         TrilinosWrappers::MPI::Vector        &x,
@@ -350,7 +328,7 @@ namespace rupture
       const double b_norm = b.l2_norm();
       if (solver_type == "direct" || solver_type == "MUMPS")
         {
-          Assert(direct_solver && factored_matrix == &matrix.trilinos_matrix(),
+          Assert(direct,
                  ExcMessage("LinearSolver::initialize() was not called."));
           AssertThrow(std::isfinite(b_norm),
                       ExcMessage("The right-hand side of the linear system is "
@@ -361,25 +339,15 @@ namespace rupture
               last_residual = 0;
               return 0;
             }
-          const auto triangular_solve =
-            [&](TrilinosWrappers::MPI::Vector       &y,
-                const TrilinosWrappers::MPI::Vector &rhs) {
-              direct_problem->SetLHS(&y.trilinos_vector());
-              direct_problem->SetRHS(const_cast<Epetra_MultiVector *>(
-                static_cast<const Epetra_MultiVector *>(
-                  &rhs.trilinos_vector())));
-              const int ierr = direct_solver->Solve();
-              AssertThrow(ierr == 0, ExcTrilinosError(ierr));
-            };
           // x = A^-1 b, then iterative refinement x += A^-1 (b - A x) while
           // the residual falls by at least half.
           TrilinosWrappers::MPI::Vector r(b), d(b);
-          triangular_solve(x, b);
+          direct->solve(x, b);
           matrix.residual(r, x, b);
           double r_norm = r.l2_norm();
           for (unsigned int s = 0; s < refinement_steps && r_norm > 0; ++s)
             {
-              triangular_solve(d, r);
+              direct->solve(d, r);
               TrilinosWrappers::MPI::Vector y(x);
               y += d;
               TrilinosWrappers::MPI::Vector r_new(b);

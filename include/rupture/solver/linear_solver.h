@@ -2,6 +2,7 @@
 #define rupture_solver_linear_solver_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -11,8 +12,14 @@
 #include <vector>
 
 class Epetra_CrsMatrix;
-class Epetra_LinearProblem;
-class Amesos_BaseSolver;
+
+namespace dealii
+{
+  namespace TrilinosWrappers
+  {
+    class SolverDirect;
+  }
+} // namespace dealii
 
 namespace rupture
 {
@@ -137,23 +144,13 @@ namespace rupture
       std::unique_ptr<TrilinosWrappers::SparseMatrix> transform;
       /// T A T of the last initialize(), which the AMG refers to.
       std::unique_ptr<Epetra_CrsMatrix> transformed;
-      /**
-       * The direct solvers: the factorisation of the last initialize(). Its
-       * symbolic part (ordering, elimination tree) is kept while the matrix
-       * object and its number of nonzeros stay the same; only the numeric
-       * factorisation is redone.
-       */
-      std::unique_ptr<Epetra_LinearProblem> direct_problem;
-      std::unique_ptr<Amesos_BaseSolver>    direct_solver;
-      const Epetra_CrsMatrix               *factored_matrix  = nullptr;
-      int                                   factored_entries = -1;
+      /// The direct solvers: the factors of the last initialize().
+      std::unique_ptr<SolverControl>                  direct_control;
+      std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
       /// Refinement steps of a direct solve (see solve()).
       unsigned int refinement_steps = 2;
       unsigned int factorizations   = 0;
       double       last_residual    = 0;
-      /// Numeric factorisation of the matrix set up in initialize().
-      void
-      factorize();
     };
   } // namespace Solver
 } // namespace rupture
