@@ -593,10 +593,36 @@ namespace rupture
             assemble_contact(scratch, true, -1);
           }
         increment_constraints.distribute(increment);
+        // Nodes that would jump across the stick region stop inside it
+        // (Fault::limit_stick_crossings()).
+        unsigned int n_limited = 0;
+        if (fault && limit_stick_crossings)
+          {
+            VectorType u_ghost(locally_owned_dofs,
+                               locally_relevant_dofs,
+                               communicator);
+            VectorType d_ghost(u_ghost);
+            u_ghost   = displacement;
+            d_ghost   = increment;
+            scratch   = 0;
+            n_limited = fault->limit_stick_crossings(u_ghost,
+                                                     d_ghost,
+                                                     increment_constraints,
+                                                     scratch);
+            if (n_limited > 0)
+              {
+                increment += scratch;
+                increment_constraints.distribute(increment);
+              }
+          }
         if (fault)
           {
             // Backtracking line search: slip weakening and changes between
-            // stick and slip can make a full Newton step overshoot.
+            // stick and slip can make a full Newton step overshoot. A step
+            // with limited stick crossings is taken in full: it is no longer
+            // a Newton step, and it puts those nodes into stick, from where
+            // the next iteration is exact for them; a shortened step would
+            // leave them slipping and the limit would repeat.
             const VectorType u_iteration(displacement);
             double           alpha = 1;
             for (unsigned int trial = 0;; ++trial)
@@ -608,7 +634,7 @@ namespace rupture
                 free_residual = residual;
                 increment_constraints.set_zero(free_residual);
                 if (free_residual.l2_norm() <= (1 - 1e-4 * alpha) * norm ||
-                    trial == 6)
+                    trial == 6 || n_limited > 0)
                   break;
                 alpha *= 0.5;
               }
@@ -622,10 +648,12 @@ namespace rupture
                       << " iterations, residual "
                       << linear_solver.last_relative_residual()
                       << ", factorisations " << linear_solver.n_factorizations()
-                      << ", line search " << alpha << ", " << f.n_slipping
-                      << " slipping, " << f.n_open << " open, pattern "
-                      << std::hex << (signatures.back() & 0xffffff) << std::dec
-                      << "\n";
+                      << ", line search " << alpha;
+                if (limit_stick_crossings)
+                  pcout << ", " << n_limited << " limited";
+                pcout << ", " << f.n_slipping << " slipping, " << f.n_open
+                      << " open, pattern " << std::hex
+                      << (signatures.back() & 0xffffff) << std::dec << "\n";
               }
           }
         else

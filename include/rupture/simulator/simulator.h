@@ -346,6 +346,8 @@ namespace rupture
     bool print_newton_iterations;
     /// <Solver/Newton predictor> of implicit dynamic steps.
     std::string newton_predictor;
+    /// <Solver/Limit stick crossings>.
+    bool limit_stick_crossings = true;
     /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
     /// a step cut, lowered again after two steps without one.
     unsigned int substep_depth     = 0;
