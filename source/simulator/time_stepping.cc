@@ -596,6 +596,8 @@ namespace rupture
         // Nodes that would jump across the stick region stop inside it
         // (Fault::limit_stick_crossings()).
         unsigned int n_limited = 0;
+        if (k == 0)
+          stick_crossings_limited = 0;
         if (fault && limit_stick_crossings)
           {
             VectorType u_ghost(locally_owned_dofs,
@@ -609,6 +611,7 @@ namespace rupture
                                                      d_ghost,
                                                      increment_constraints,
                                                      scratch);
+            stick_crossings_limited += n_limited;
             if (n_limited > 0)
               {
                 increment += scratch;
@@ -701,7 +704,37 @@ namespace rupture
         newton_may_cut = (depth < max_step_cuts);
         try
           {
-            implicit_substep();
+            try
+              {
+                implicit_substep();
+              }
+            catch (const NewtonFailure &failure)
+              {
+                // The stick-crossing limit can keep a node from the far
+                // side of its stick region where its solution lies (seen
+                // with time steps 100-1000 times the explicit limit): try
+                // the step once more without it before cutting it.
+                if (!limit_stick_crossings || stick_crossings_limited == 0)
+                  throw;
+                displacement = u;
+                velocity     = v;
+                acceleration = a;
+                pcout << "    Newton failed with dt = " << h << " s ("
+                      << failure.reason
+                      << ") after limiting stick crossings: the step is "
+                         "tried again without the limit\n";
+                limit_stick_crossings = false;
+                try
+                  {
+                    implicit_substep();
+                  }
+                catch (...)
+                  {
+                    limit_stick_crossings = true;
+                    throw;
+                  }
+                limit_stick_crossings = true;
+              }
             newton_may_cut = false;
             deepest        = std::max(deepest, depth);
           }

@@ -348,6 +348,8 @@ namespace rupture
     std::string newton_predictor;
     /// <Solver/Limit stick crossings>.
     bool limit_stick_crossings = true;
+    /// Stick crossings limited in the current Newton solve.
+    unsigned int stick_crossings_limited = 0;
     /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
     /// a step cut, lowered again after two steps without one.
     unsigned int substep_depth     = 0;
