@@ -50,6 +50,7 @@ namespace rupture
         t0_t + p_t * (delta_t - projector * old_plastic_slip);
       const double trial_norm = trial.norm();
       const double cohesion   = law.cohesion(x);
+      r.trial_traction        = trial;
 
       double mu = law.coefficient(x, old_state, 0., dt, derivative);
       // A point exactly at its strength (as after a converged slip step)

@@ -550,7 +550,6 @@ namespace rupture
     template <int dim>
     unsigned int
     Fault<dim>::limit_stick_crossings(
-      const VectorType                &u,
       const VectorType                &increment,
       const AffineConstraints<double> &constraints,
       VectorType                      &correction) const
@@ -563,39 +562,31 @@ namespace rupture
           if (pair.trial.status != ContactStatus::slip ||
               (pair.forced && forced_slip_active))
             continue;
+          // Tangential trial traction now and along the update,
+          // T(s) = T + s D, and the strength now (the traction that slip
+          // returned the trial to).
           const Tensor<1, dim> &n = pair.normal;
-          Tensor<1, dim>        delta, step;
+          Tensor<1, dim>        step;
           for (unsigned int c = 0; c < dim; ++c)
-            {
-              delta[c] = u(pair.plus[c]) - u(pair.minus[c]);
-              step[c]  = increment(pair.plus[c]) - increment(pair.minus[c]);
-            }
-          const Tensor<1, dim> step_t = step - (step * n) * n;
-          const Tensor<1, dim> slip_t =
-            delta - (delta * n) * n -
-            (pair.plastic_slip - (pair.plastic_slip * n) * n);
-          const Tensor<1, dim> t0_t =
-            pair.initial_traction - (pair.initial_traction * n) * n;
-          // Tangential trial tractions (from the last converged plastic slip)
-          // now and along the update, T(s) = T + s D, and the strength now.
-          const Tensor<1, dim> T  = t0_t + pair.tangential_penalty * slip_t;
-          const Tensor<1, dim> D  = pair.tangential_penalty * step_t;
-          const double         D2 = D * D;
+            step[c] = increment(pair.plus[c]) - increment(pair.minus[c]);
+          const Tensor<1, dim>  step_t = step - (step * n) * n;
+          const Tensor<1, dim> &T      = pair.trial.trial_traction;
+          const Tensor<1, dim>  D      = pair.tangential_penalty * step_t;
+          const double          D2     = D * D;
           if (D2 == 0)
             continue;
-          const double pressure = -(pair.trial.traction * n);
-          const double strength = pair.trial.friction * std::max(pressure, 0.) +
-                                  friction_law->cohesion(to_3d(pair.location));
+          const Tensor<1, dim> &traction = pair.trial.traction;
+          const double strength = (traction - (traction * n) * n).norm();
           // The update's closest approach to zero traction, and whether it
           // lies in the stick region while the full update ends in slip.
           const double s_min   = std::min(std::max(-(T * D) / D2, 0.), 1.);
           const double closest = (T + s_min * D).norm();
           if (s_min >= 1 || (T + D).norm() <= strength || closest >= strength)
             continue;
-          // Stop a tenth of the way into the stick region (between where
-          // the update enters it and its middle): the node's traction
-          // changes little, and the next iteration starts from stick, whose
-          // penalty tangent is exact there.
+          // Stop 5 % of the chord into the stick region (a tenth of the way
+          // from where the update enters it to its middle): the node's
+          // traction changes little, and the next iteration starts from
+          // stick, whose penalty tangent is exact there.
           const double s = std::max(s_min - 0.9 *
                                               std::sqrt(strength * strength -
                                                         closest * closest) /

@@ -449,6 +449,7 @@ namespace rupture
     unsigned long last_signature    = 0;
     unsigned int  linear_iterations = 0;
     last_linear_iterations          = 0;
+    stick_crossings_limited         = 0;
     std::vector<double>        norms;
     std::vector<unsigned long> signatures;
     for (unsigned int k = 0;; ++k)
@@ -596,19 +597,14 @@ namespace rupture
         // Nodes that would jump across the stick region stop inside it
         // (Fault::limit_stick_crossings()).
         unsigned int n_limited = 0;
-        if (k == 0)
-          stick_crossings_limited = 0;
-        if (fault && limit_stick_crossings)
+        if (fault && limit_stick_crossings && !stick_crossing_limit_suspended)
           {
-            VectorType u_ghost(locally_owned_dofs,
+            VectorType d_ghost(locally_owned_dofs,
                                locally_relevant_dofs,
                                communicator);
-            VectorType d_ghost(u_ghost);
-            u_ghost   = displacement;
             d_ghost   = increment;
             scratch   = 0;
-            n_limited = fault->limit_stick_crossings(u_ghost,
-                                                     d_ghost,
+            n_limited = fault->limit_stick_crossings(d_ghost,
                                                      increment_constraints,
                                                      scratch);
             stick_crossings_limited += n_limited;
@@ -652,7 +648,7 @@ namespace rupture
                       << linear_solver.last_relative_residual()
                       << ", factorisations " << linear_solver.n_factorizations()
                       << ", line search " << alpha;
-                if (limit_stick_crossings)
+                if (limit_stick_crossings && !stick_crossing_limit_suspended)
                   pcout << ", " << n_limited << " limited";
                 pcout << ", " << f.n_slipping << " slipping, " << f.n_open
                       << " open, pattern " << std::hex
@@ -714,7 +710,7 @@ namespace rupture
                 // side of its stick region where its solution lies (seen
                 // with time steps 100-1000 times the explicit limit): try
                 // the step once more without it before cutting it.
-                if (!limit_stick_crossings || stick_crossings_limited == 0)
+                if (stick_crossings_limited == 0)
                   throw;
                 displacement = u;
                 velocity     = v;
@@ -723,24 +719,18 @@ namespace rupture
                       << failure.reason
                       << ") after limiting stick crossings: the step is "
                          "tried again without the limit\n";
-                limit_stick_crossings = false;
-                try
-                  {
-                    implicit_substep();
-                  }
-                catch (...)
-                  {
-                    limit_stick_crossings = true;
-                    throw;
-                  }
-                limit_stick_crossings = true;
+                // (If it fails again, the catch below ends the suspension.)
+                stick_crossing_limit_suspended = true;
+                implicit_substep();
+                stick_crossing_limit_suspended = false;
               }
             newton_may_cut = false;
             deepest        = std::max(deepest, depth);
           }
         catch (const NewtonFailure &failure)
           {
-            newton_may_cut = false;
+            newton_may_cut                 = false;
+            stick_crossing_limit_suspended = false;
             if (depth == max_step_cuts)
               throw NewtonFailure(std::string(failure.what()) +
                                     " The step was cut " +

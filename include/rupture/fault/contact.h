@@ -30,6 +30,10 @@ namespace rupture
       /// T = sigma n with n pointing from minus to plus. Compression is
       /// T.n < 0.
       Tensor<1, dim> traction;
+      /// The tangential elastic trial traction (Pa), T_0 + p_t (delta -
+      /// old plastic slip) projected on the fault plane, before the return
+      /// mapping (zero where the point is open or its slip is imposed).
+      Tensor<1, dim> trial_traction;
       /// The consistent tangent dT/d(delta) (Pa/m); nonsymmetric when
       /// slipping (the paper's D^ep, eq. 11).
       Tensor<2, dim> tangent;

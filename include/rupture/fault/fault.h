@@ -151,19 +151,17 @@ namespace rupture
                const double                     sign = 1);
 
       /**
-       * Newton safeguard of penalty contact. For each pair that slips at the
-       * displacement @p u of the last assemble(), look at its tangential
-       * trial traction along the Newton update @p increment (both with ghost
-       * entries). If the full update would carry it from slip straight
-       * across the stick region into slip again (typically reversing the
-       * slip direction, the overshoot of a node coming to rest), add to
-       * @p correction the change of the pair's tangential jump that stops
-       * the update a tenth of the way into the stick
-       * region. Returns the number of such pairs over all ranks.
+       * Newton safeguard of penalty contact. For each pair that slips in the
+       * last assemble(), follow its tangential trial traction along the
+       * Newton update @p increment (with ghost entries). If the full update
+       * would carry it from slip straight across the stick region into slip
+       * again (typically reversing the slip direction, the overshoot of a
+       * node coming to rest), add to @p correction the change of the pair's
+       * tangential jump that stops the update 5 % of the chord into the
+       * stick region. Returns the number of such pairs over all ranks.
        */
       unsigned int
-      limit_stick_crossings(const VectorType                &u,
-                            const VectorType                &increment,
+      limit_stick_crossings(const VectorType                &increment,
                             const AffineConstraints<double> &constraints,
                             VectorType                      &correction) const;
 

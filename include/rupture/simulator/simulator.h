@@ -348,8 +348,10 @@ namespace rupture
     std::string newton_predictor;
     /// <Solver/Limit stick crossings>.
     bool limit_stick_crossings = true;
-    /// Stick crossings limited in the current Newton solve.
+    /// Stick crossings limited in the current (or last) Newton solve.
     unsigned int stick_crossings_limited = 0;
+    /// True while a step is retried without the limit.
+    bool stick_crossing_limit_suspended = false;
     /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
     /// a step cut, lowered again after two steps without one.
     unsigned int substep_depth     = 0;
