@@ -53,6 +53,10 @@ namespace rupture
       r.trial_traction        = trial;
 
       double mu = law.coefficient(x, old_state, 0., dt, derivative);
+      // Weakening at the start of the slip steeper than the penalty: g
+      // below grows with the slip there, so the root lies beyond the
+      // weakening and the traction drops to the residual strength at once.
+      const bool snaps = (-derivative * pressure >= p_t);
       // A point exactly at its strength (as after a converged slip step)
       // sticks: unloading must start from the stiff branch.
       if (trial_norm <= (mu * pressure + cohesion) * (1 + 1e-10))
@@ -110,10 +114,10 @@ namespace rupture
       //       + e (x) (-k e - mu p_n n) / (1 - k / p_t),
       // with k = -mu'(l) |T_n| the weakening slope.
       const double denominator = 1 - k / p_t;
-      r.unstable_softening     = (denominator <= 0);
+      r.unstable_softening     = (denominator <= 0) || snaps;
       const Tensor<2, dim> ee  = outer_product(e, e);
       r.tangent = p_n * nn + (tau * p_t / trial_norm) * (projector - ee);
-      if (!r.unstable_softening)
+      if (denominator > 0)
         r.tangent += outer_product(e, -k * e - mu * p_n * n) / denominator;
       else
         r.tangent += outer_product(e, -mu * p_n * n);

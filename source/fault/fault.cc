@@ -903,6 +903,52 @@ namespace rupture
 
 
     template <int dim>
+    unsigned int
+    Fault<dim>::n_steeper_than_body(
+      const TrilinosWrappers::SparseMatrix &effective_stiffness) const
+    {
+      const IndexSet owned = effective_stiffness.locally_owned_range_indices();
+      unsigned int   n     = 0;
+      for (const auto &pair : pairs)
+        {
+          const ContactResponse<dim> &r = pair.trial;
+          if (pair.forced || r.status != ContactStatus::slip ||
+              r.friction_derivative >= 0)
+            continue;
+          const double   tn  = r.traction * pair.normal;
+          const double   k   = -r.friction_derivative * std::max(-tn, 0.);
+          const double   p_t = pair.tangential_penalty;
+          Tensor<1, dim> e   = r.traction - tn * pair.normal;
+          if (e.norm() == 0 || k == 0)
+            continue;
+          e /= e.norm();
+          // Where the weakening is steeper than the penalty the node's
+          // traction snaps to its residual strength instead (counted by
+          // Statistics::unstable_softening).
+          if (k >= p_t)
+            continue;
+          const double softening = k * p_t / (p_t - k) * pair.area;
+          // The stiffness of each side along e; a side whose rows live on
+          // another rank counts as the other.
+          const auto side = [&](const auto &dofs) {
+            double d = 0;
+            for (unsigned int c = 0; c < dim; ++c)
+              d += e[c] * e[c] * effective_stiffness.diag_element(dofs[c]);
+            return d;
+          };
+          const double minus = side(pair.minus);
+          const double plus =
+            owned.is_element(pair.plus[0]) ? side(pair.plus) : minus;
+          if (minus > 0 && plus > 0 &&
+              softening > minus * plus / (minus + plus))
+            ++n;
+        }
+      return dealii::Utilities::MPI::sum(n, communicator);
+    }
+
+
+
+    template <int dim>
     Statistics
     Fault<dim>::statistics() const
     {

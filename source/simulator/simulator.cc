@@ -931,6 +931,7 @@ namespace rupture
           check_finite(displacement,
                        "energy computed from the displacement",
                        !finite);
+          check_explicit_energy_balance();
           statistics.add_row(row);
         }
         if (fault)
@@ -982,6 +983,41 @@ namespace rupture
           }
       }
     return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_explicit_energy_balance() const
+  {
+    // Only steps above the stable limit (<Allow unstable time step>) can
+    // blow up. Central differences miss the budget by O(dt^2), at most a
+    // few per cent even there while the run is stable (doc/stability.md);
+    // an error of half of all the energy in play is a blow-up that has not
+    // overflowed yet.
+    if (current_scheme !=
+          TimeIntegration::Scheme::explicit_central_difference ||
+        !(time_step > stable_time_step))
+      return;
+    const double error = kinetic_energy + strain_energy + damping_dissipation +
+                         fault_work - external_work - initial_energy;
+    const double scale =
+      std::max({std::abs(kinetic_energy) + std::abs(strain_energy),
+                std::abs(external_work),
+                std::abs(damping_dissipation),
+                std::abs(fault_work),
+                std::abs(initial_energy)});
+    if (!(scale > 0) || std::abs(error) <= 0.5 * scale)
+      return;
+    std::ostringstream message;
+    message << "At step " << step << " (t = " << time
+            << " s) the energy balance error is " << std::abs(error) / scale
+            << " of the energy in play: the explicit scheme is unstable, and "
+               "the run was stopped before writing this step. Its time step is "
+            << time_step << " s against the stable limit " << stable_time_step
+            << " s. Reduce <Time integration/Time step>.";
+    AssertThrow(false, ExcMessage(message.str()));
   }
 
 

@@ -446,6 +446,7 @@ namespace rupture
 
     double        reference         = 0;
     double        increment_norm    = 0;
+    double        increment_ratio   = 0;
     unsigned long last_signature    = 0;
     unsigned int  linear_iterations = 0;
     last_linear_iterations          = 0;
@@ -459,9 +460,11 @@ namespace rupture
         free_residual = residual;
         increment_constraints.set_zero(free_residual);
         const double norm = free_residual.l2_norm();
-        AssertThrow(std::isfinite(norm),
-                    ExcMessage("At step " + std::to_string(step) +
-                               " the force residual is no longer finite."));
+        // Names the place and the likely cause, and stops the run.
+        if (!std::isfinite(norm))
+          check_finite(free_residual,
+                       "force residual of Newton iteration " +
+                         std::to_string(k));
 
         if (!fault)
           {
@@ -494,6 +497,7 @@ namespace rupture
                   norm <= newton_force_tolerance * reference;
                 const bool displacement_ok =
                   increment_norm <= newton_displacement_tolerance * change;
+                increment_ratio = increment_norm / std::max(change, 1e-300);
                 const bool linear =
                   (signature == last_signature) && fault->all_stuck();
                 if (force_ok && (displacement_ok || linear))
@@ -540,21 +544,45 @@ namespace rupture
                           << " iterations the force residual fell to "
                           << norm / reference << " of its first value (wanted "
                           << newton_force_tolerance << ")";
+                if (norm <= newton_force_tolerance * reference)
+                  message << ", but the last correction was " << increment_ratio
+                          << " of the step's displacement change (wanted "
+                          << newton_displacement_tolerance << ")";
                 message << "; " << f.n_slipping << " slipping and " << f.n_open
                         << " open fault nodes. ";
+                // The matrix holds the effective stiffness without the
+                // contact here (it is added for each solve only).
+                const unsigned int n_steep =
+                  fault->n_steeper_than_body(system_matrix);
+                std::string reason =
+                  stalled ? "the residual stalled" : "too many iterations";
                 if (f.unstable_softening)
-                  message << "Slip weakening is steeper than the tangential "
-                             "penalty at some nodes ((mu_0 - mu_d) / L_d "
-                             "|T_n| > p_t), which makes the tangent "
-                             "indefinite: raise <Fault/Tangential penalty> "
-                             "or L_d, or reduce the time step.";
+                  {
+                    message << "Slip weakening is steeper than the "
+                               "tangential penalty at some nodes ((mu_0 - "
+                               "mu_d) / L_d |T_n| > p_t), so their traction "
+                               "drops to the residual strength at once: "
+                               "raise <Fault/Tangential penalty> or L_d.";
+                    reason += "; weakening steeper than the penalty";
+                  }
+                else if (n_steep > 0)
+                  {
+                    message << "At " << n_steep
+                            << " slipping fault node(s) slip weakening is "
+                               "steeper than the stiffness of the body that "
+                               "holds them (the tangent is indefinite there): "
+                               "reduce <Time integration/Time step> (the "
+                               "inertia term stiffens as 1/dt^2), or raise "
+                               "the slip-weakening distance or the mesh "
+                               "resolution.";
+                    reason += "; weakening steeper than the body at " +
+                              std::to_string(n_steep) + " node(s)";
+                  }
                 else
                   message << "Reduce <Time integration/Time step>, or raise "
                              "<Solver/Maximum Newton iterations> (or "
                              "<Solver/Newton stall iterations>).";
-                throw NewtonFailure(message.str(),
-                                    stalled ? "the residual stalled" :
-                                              "too many iterations");
+                throw NewtonFailure(message.str(), reason);
               }
             last_signature = signature;
           }

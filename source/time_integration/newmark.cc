@@ -55,7 +55,8 @@ namespace rupture
           Patterns::Bool(),
           "Let the explicit scheme run with a step above its stable limit. "
           "Only for stability studies: such a run blows up, and is stopped "
-          "as soon as a value is no longer finite.");
+          "as soon as its energy balance error reaches half of the energy "
+          "in play or a value is no longer finite.");
         prm.enter_subsection("Loading phase");
         {
           prm.declare_entry(

@@ -47,8 +47,10 @@ namespace rupture
       /// Its derivative with respect to the slip increment (1/m): negative
       /// while the point weakens.
       double friction_derivative = 0;
-      /// True if slip weakening is steeper than the tangential penalty, so
-      /// that the tangent is singular or indefinite (snap-back).
+      /// True if slip weakening is steeper than the tangential penalty where
+      /// the point starts to slip: its traction then drops to the residual
+      /// strength within the step (snap-back), a jump in the response that
+      /// Newton's method handles poorly.
       bool unstable_softening = false;
     };
 

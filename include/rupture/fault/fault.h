@@ -262,6 +262,21 @@ namespace rupture
       n_weakening() const;
 
       /**
+       * The number of fault nodes (over all ranks) that slipped in the last
+       * assemble() while still weakening, with a softening stiffness
+       * (-mu' |T_n| p_t / (p_t + mu' |T_n|) times the node's area, the slip
+       * direction's part of the contact tangent) larger than the stiffness
+       * that holds the node along its slip direction: the two sides'
+       * diagonal entries of @p effective_stiffness (stiffness plus the
+       * Newmark mass and damping terms, without the contact) in series.
+       * There the global tangent is indefinite, which makes Newton's method
+       * fail; a shorter time step stiffens the inertia term as 1/dt^2.
+       */
+      unsigned int
+      n_steeper_than_body(
+        const TrilinosWrappers::SparseMatrix &effective_stiffness) const;
+
+      /**
        * True if no pair slipped in the last assemble().
        */
       bool

@@ -220,6 +220,10 @@ namespace rupture
     check_finite(const VectorType  &v,
                  const std::string &what,
                  const bool         overflowed = false) const;
+    /// Stop an explicit run above the stable step whose energy balance
+    /// error has grown to half of the energy in play.
+    void
+    check_explicit_energy_balance() const;
 
     // --- output (simulator.cc) ---
     void
