@@ -288,6 +288,7 @@ namespace rupture
     , strain_energy(0)
     , external_work(0)
     , damping_dissipation(0)
+    , absorbed_energy(0)
     , fault_work(0)
     , last_linear_iterations(0)
     , last_newton_iterations(0)
@@ -776,6 +777,10 @@ namespace rupture
             "Mean normal traction on the fault (Pa, < 0 in compression)",
             "Mean shear traction on the fault (Pa)"})
         columns.push_back(c);
+    // Last, so that the columns before keep their numbers.
+    if (has_absorbing)
+      columns.emplace_back("Energy absorbed at the absorbing boundaries (J): "
+                           "part of the dissipated energy");
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
     if (fault)
@@ -819,6 +824,8 @@ namespace rupture
             assemble_load_vector(time, load);
             compute_acceleration(load);
             compute_damping_force(velocity, damping_force);
+            if (has_absorbing)
+              compute_absorbing_force(velocity, absorbing_force);
           }
         run_phase(start + time_parameters.end_time, false);
       }
@@ -1010,11 +1017,14 @@ namespace rupture
                 std::abs(initial_energy)});
     if (!(scale > 0) || std::abs(error) <= 0.5 * scale)
       return;
+    // (Collective: every rank has the same energies.)
+    const std::string  where = locate_largest(displacement);
     std::ostringstream message;
     message << "At step " << step << " (t = " << time
             << " s) the energy balance error is " << std::abs(error) / scale
-            << " of the energy in play: the explicit scheme is unstable, and "
-               "the run was stopped before writing this step. Its time step is "
+            << " of the energy in play, with the displacement " << where
+            << ": the explicit scheme is unstable, and the run was stopped "
+               "before writing this step. Its time step is "
             << time_step << " s against the stable limit " << stable_time_step
             << " s. Reduce <Time integration/Time step>.";
     AssertThrow(false, ExcMessage(message.str()));
@@ -1060,6 +1070,8 @@ namespace rupture
                                f.mean_shear_traction})
           row.push_back(v);
       }
+    if (has_absorbing)
+      row.push_back(absorbed_energy);
     return row;
   }
 

@@ -103,6 +103,18 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::compute_absorbing_force(const VectorType &v,
+                                          VectorType       &y) const
+  {
+    y = v;
+    y.scale(absorbing_damping);
+    hanging_constraints.set_zero(y);
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::add_kinematic_increment(VectorType &u) const
   {
     for (const auto &k : kinematic_dofs)
@@ -138,17 +150,11 @@ namespace rupture
 
 
   template <int dim>
-  void
-  Simulator<dim>::check_finite(const VectorType  &v,
-                               const std::string &what,
-                               const bool         overflowed) const
+  std::string
+  Simulator<dim>::locate_largest(const VectorType &v) const
   {
-    const double norm = v.l2_norm();
-    if (std::isfinite(norm) && !overflowed)
-      return;
-
-    // Where: the support point of the entry that is not finite, or, if
-    // only the norm overflowed, of the largest one; over all ranks.
+    // The support point of the entry that is not finite, or of the largest
+    // one; over all ranks.
     Point<dim>   where;
     unsigned int where_component = 0;
     double       worst           = -1;
@@ -189,13 +195,30 @@ namespace rupture
     data[dim] = where_component;
     MPI_Bcast(data.data(), dim + 1, MPI_DOUBLE, owner, communicator);
 
+    std::ostringstream text;
+    text << "largest in component " << static_cast<int>(data[dim]) << " at (";
+    for (unsigned int d = 0; d < dim; ++d)
+      text << (d > 0 ? ", " : "") << data[d];
+    text << ") m";
+    return text.str();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_finite(const VectorType  &v,
+                               const std::string &what,
+                               const bool         overflowed) const
+  {
+    const double norm = v.l2_norm();
+    if (std::isfinite(norm) && !overflowed)
+      return;
+
     std::ostringstream message;
     message << "At step " << step << " (t = " << time << " s) the " << what
-            << " is no longer finite, largest in component "
-            << static_cast<int>(data[dim]) << " at (";
-    for (unsigned int d = 0; d < dim; ++d)
-      message << (d > 0 ? ", " : "") << data[d];
-    message << ") m; the run was stopped before writing it. ";
+            << " is no longer finite, " << locate_largest(v)
+            << "; the run was stopped before writing it. ";
     if (current_scheme == TimeIntegration::Scheme::explicit_central_difference)
       message << "The explicit scheme blew up: its time step " << time_step
               << " s against the stable limit " << stable_time_step
@@ -350,7 +373,13 @@ namespace rupture
       }
     external_work       = 0;
     damping_dissipation = 0;
-    initial_energy      = kinetic_energy + strain_energy;
+    absorbed_energy     = 0;
+    if (has_absorbing)
+      {
+        absorbing_force.reinit(load);
+        compute_absorbing_force(velocity, absorbing_force);
+      }
+    initial_energy = kinetic_energy + strain_energy;
   }
 
 
@@ -384,6 +413,18 @@ namespace rupture
       0.5 * ((new_damping_force * increment) + (damping_force * increment));
     applied_force = force;
     damping_force = new_damping_force;
+    if (has_absorbing &&
+        current_scheme != TimeIntegration::Scheme::quasi_static)
+      {
+        // The dashpots' share, from the velocities at the ends of the step
+        // (the schemes' damping force may use a predicted velocity
+        // instead, so this split is exact only to O(dt)).
+        VectorType f(load);
+        compute_absorbing_force(velocity, f);
+        absorbed_energy +=
+          0.5 * ((f * increment) + (absorbing_force * increment));
+        absorbing_force = f;
+      }
 
     VectorType tmp(load);
     if (stiffness_force)

@@ -206,6 +206,9 @@ namespace rupture
                                const FullMatrix<double> &)> &action) const;
     void
     compute_damping_force(const VectorType &velocity, VectorType &y) const;
+    /// The force of the absorbing boundaries' dashpots alone, at @p velocity.
+    void
+    compute_absorbing_force(const VectorType &velocity, VectorType &y) const;
     void
     add_kinematic_increment(VectorType &displacement) const;
     void
@@ -220,6 +223,10 @@ namespace rupture
     check_finite(const VectorType  &v,
                  const std::string &what,
                  const bool         overflowed = false) const;
+    /// "largest in component c at (x, y, z) m": where |v| is largest (or
+    /// not finite), over all ranks.
+    std::string
+    locate_largest(const VectorType &v) const;
     /// Stop an explicit run above the stable step whose energy balance
     /// error has grown to half of the energy in play.
     void
@@ -330,6 +337,10 @@ namespace rupture
     double strain_energy;
     double external_work;
     double damping_dissipation;
+    /// The part of damping_dissipation that left through the absorbing
+    /// boundaries, and their force at the end of the last step.
+    double     absorbed_energy;
+    VectorType absorbing_force;
     /// Work done on the fault: penalty spring energy plus friction (J).
     double       fault_work;
     unsigned int last_linear_iterations;
