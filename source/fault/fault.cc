@@ -742,15 +742,23 @@ namespace rupture
           pair.slip_velocity = (pair.trial_slip - pair.slip) / dt;
           updated.slip_rate  = pair.slip_velocity.norm();
           // Rupture time: the first time the slip rate exceeds 1 mm/s,
-          // linearly interpolated within the step (SCEC convention).
-          if (pair.rupture_time < 0 && updated.slip_rate > 1e-3)
+          // linearly interpolated within the step (SCEC convention). With
+          // penalty contact the jump also holds the springs' elastic part
+          // traction / p_t, which moves whenever a passing wave changes the
+          // traction (at TPV3's penalties faster than 1 mm/s, well ahead of
+          // the rupture), so there it is the rate of the frictional
+          // (plastic) slip; the split nodes have no elastic part.
+          const double rate = split_node_method ?
+                                updated.slip_rate :
+                                pair.trial.slip_increment / dt;
+          if (pair.rupture_time < 0 && rate > 1e-3)
             {
-              const double previous = pair.state.slip_rate;
-              const double w        = (1e-3 - previous) /
-                               std::max(updated.slip_rate - previous, 1e-300);
+              const double w = (1e-3 - pair.rupture_rate) /
+                               std::max(rate - pair.rupture_rate, 1e-300);
               pair.rupture_time =
                 time - dynamic_start - dt + std::clamp(w, 0., 1.) * dt;
             }
+          pair.rupture_rate = rate;
           const Tensor<1, dim> t =
             pair.trial.traction -
             (pair.trial.traction * pair.normal) * pair.normal;

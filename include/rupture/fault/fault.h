@@ -309,6 +309,9 @@ namespace rupture
         Tensor<1, dim>  slip;
         Tensor<1, dim>  slip_velocity;
         double          rupture_time = -1;
+        /// The slip rate that the rupture time is measured on, at the end
+        /// of the last step (see commit()).
+        double rupture_rate = 0;
         /// Slip at the start of the dynamic phase: output and statistics
         /// count the slip from there (coseismic slip).
         Tensor<1, dim> slip_at_start;
