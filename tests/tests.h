@@ -47,7 +47,9 @@ namespace tests
   }
 
   /**
-   * The rows of an <output>/statistics file.
+   * The rows of an <output>/statistics file, or of any table of numbers
+   * with '#' comment lines and a line of field names (station and receiver
+   * files).
    */
   inline std::vector<std::vector<double>>
   read_statistics(const std::string &file)

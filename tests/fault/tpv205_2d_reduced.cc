@@ -29,29 +29,6 @@
 
 namespace
 {
-  // The columns of a station or receiver file: the rows after the
-  // field-name line, which starts with "t ".
-  std::vector<std::vector<double>>
-  read_columns(const std::string &file)
-  {
-    std::vector<std::vector<double>> rows;
-    std::istringstream               in(tests::read_file(file));
-    std::string                      line;
-    while (std::getline(in, line))
-      {
-        if (line.empty() || line[0] == '#' || line[0] == 't')
-          continue;
-        std::istringstream  s(line);
-        std::vector<double> row;
-        double              v;
-        while (s >> v)
-          row.push_back(v);
-        if (!row.empty())
-          rows.push_back(row);
-      }
-    return rows;
-  }
-
   // First time the horizontal slip rate (column 2) exceeds 1 mm/s; -1 if
   // never.
   double
@@ -90,8 +67,9 @@ main(int argc, char **argv)
   for (const std::string name :
        {"000", "045", "-045", "075", "-075", "120", "-120"})
     {
-      const auto rows = read_columns("tpv205/faultst" + name + ".dat");
-      t[name]         = rupture_time(rows);
+      const auto rows =
+        tests::read_statistics("tpv205/faultst" + name + ".dat");
+      t[name] = rupture_time(rows);
       std::printf("station %s: %zu rows\n", name.c_str(), rows.size());
     }
   const bool inner = t["000"] >= 0 && t["045"] >= 0 && t["-045"] >= 0 &&
@@ -106,8 +84,8 @@ main(int argc, char **argv)
               (inner && t["-075"] < t["075"]) ? "yes" : "no");
 
   // Receivers: t x-disp x-vel y-disp y-vel.
-  const auto plus  = read_columns("tpv205/body030st120dp000.dat");
-  const auto minus = read_columns("tpv205/body030st-120dp000.dat");
+  const auto plus  = tests::read_statistics("tpv205/body030st120dp000.dat");
+  const auto minus = tests::read_statistics("tpv205/body030st-120dp000.dat");
   if (plus.empty() || minus.empty())
     {
       std::printf("receiver files missing\n");
