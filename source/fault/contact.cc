@@ -49,7 +49,7 @@ namespace rupture
       const Tensor<1, dim> trial =
         t0_t + p_t * (delta_t - projector * old_plastic_slip);
       const double trial_norm = trial.norm();
-      const double cohesion   = law.cohesion(x);
+      const double cohesion   = law.cohesion(x, old_state);
       r.trial_traction        = trial;
 
       double mu = law.coefficient(x, old_state, 0., dt, derivative);

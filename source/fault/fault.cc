@@ -428,6 +428,30 @@ namespace rupture
             pairs.push_back(pair);
           }
 
+      if (split_node_method)
+        {
+          // The split-node method reads and writes the pairs' DoFs alone.
+          // Their forces go straight to the DoFs, so none may be
+          // constrained (hanging nodes on the fault are not supported).
+          std::vector<types::global_dof_index> indices;
+          bool                                 constrained = false;
+          for (const auto &pair : pairs)
+            for (const auto *side : {&pair.minus, &pair.plus})
+              for (const auto dof : *side)
+                {
+                  indices.push_back(dof);
+                  constrained = constrained || constraints.is_constrained(dof);
+                }
+          AssertThrow(dealii::Utilities::MPI::max(constrained ? 1 : 0,
+                                                  communicator) == 0,
+                      ExcMessage("The fault's split nodes lie on hanging "
+                                 "nodes: the traction-at-split-node method "
+                                 "needs the same refinement on both sides "
+                                 "of the fault and along it. Refine the "
+                                 "mesh globally."));
+          pair_dofs.reinit(locally_owned_dofs, indices, communicator);
+        }
+
       unsigned int n_welded_owned = 0;
       for (const auto &[key, pair] : welded_nodes)
         if (locally_owned_dofs.is_element(pair.minus[0]))
@@ -612,15 +636,13 @@ namespace rupture
 
     template <int dim>
     void
-    Fault<dim>::assemble_split_node(
-      const VectorType                &u,
-      const VectorType                &v,
-      const VectorType                &residual,
-      const VectorType                &inverse_mass,
-      const double                     dt,
-      const double                     gamma,
-      const AffineConstraints<double> &force_constraints,
-      VectorType                      &force)
+    Fault<dim>::assemble_split_node(const VectorType &u,
+                                    const VectorType &v,
+                                    const VectorType &residual,
+                                    const VectorType &inverse_mass,
+                                    const double      dt,
+                                    const double      gamma,
+                                    VectorType       &force)
     {
       // With the fault traction T = T_0 + dT acting on the minus node (and
       // -T on the plus node), the accelerations of the step are
@@ -631,18 +653,25 @@ namespace rupture
       //   dT = [dv / (c dt) + R+/M+ - R-/M- + (du.n) n / (c dt^2)]
       //        / (A (1/M+ + 1/M-)),
       // with dv = v+ - v- and du = u+ - u-.
-      const double c = gamma + 0.5;
-      for (auto &pair : pairs)
+      const double            c         = gamma + 0.5;
+      const VectorType *const fields[4] = {&u, &v, &residual, &inverse_mass};
+      for (unsigned int f = 0; f < 4; ++f)
+        pair_dofs.gather(fields[f]->trilinos_vector()[0], pair_values[f]);
+      const std::vector<double> &us = pair_values[0], &vs = pair_values[1],
+                                &rs = pair_values[2], &ms = pair_values[3];
+      std::vector<double> &forces = pair_values[0];
+      for (unsigned int k = 0; k < pairs.size(); ++k)
         {
-          Tensor<1, dim> du, rate, acceleration, inverse_sum;
+          NodePair          &pair = pairs[k];
+          const unsigned int m0 = 2 * dim * k, p0 = m0 + dim;
+          Tensor<1, dim>     du, rate, acceleration, inverse_sum;
           for (unsigned int d = 0; d < dim; ++d)
             {
-              const auto m = pair.minus[d], p = pair.plus[d];
-              du[d]   = u(p) - u(m);
-              rate[d] = v(p) - v(m);
-              acceleration[d] =
-                residual(p) * inverse_mass(p) - residual(m) * inverse_mass(m);
-              inverse_sum[d] = inverse_mass(p) + inverse_mass(m);
+              const unsigned int m = m0 + d, p = p0 + d;
+              du[d]           = us[p] - us[m];
+              rate[d]         = vs[p] - vs[m];
+              acceleration[d] = rs[p] * ms[p] - rs[m] * ms[m];
+              inverse_sum[d]  = ms[p] + ms[m];
             }
           const Tensor<1, dim> &n         = pair.normal;
           const double          gap       = du * n;
@@ -682,9 +711,9 @@ namespace rupture
               (increment > 0) ? ContactStatus::slip : ContactStatus::stick;
           else
             {
-              const Tensor<1, dim> shear = T - tn * n;
-              const double         strength =
-                std::max(r.friction * (-tn) + friction_law->cohesion(x), 0.);
+              const Tensor<1, dim> shear    = T - tn * n;
+              const double         strength = std::max(
+                r.friction * (-tn) + friction_law->cohesion(x, pair.state), 0.);
               if (shear.norm() > strength)
                 {
                   r.status = ContactStatus::slip;
@@ -697,9 +726,16 @@ namespace rupture
           pair.trial      = r;
           pair.trial_slip = slip;
 
-          add_internal_force(pair, force_constraints, force);
+          // Internal force of the fault: -A dT on the minus node, +A dT on
+          // the plus node (as add_internal_force()).
+          const Tensor<1, dim> dT = T - pair.initial_traction;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              forces[m0 + d] = -pair.area * dT[d];
+              forces[p0 + d] = pair.area * dT[d];
+            }
         }
-      force.compress(VectorOperation::add);
+      pair_dofs.scatter_add(forces, force.trilinos_vector()[0]);
     }
 
 

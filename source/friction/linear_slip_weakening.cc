@@ -95,15 +95,31 @@ namespace rupture
 
 
 
+    std::array<double, 5>
+    LinearSlipWeakening::point_parameters(const Point<3> &x,
+                                          const State    &state) const
+    {
+      if (state.parameters.size() == 5)
+        return {state.parameters[0],
+                state.parameters[1],
+                state.parameters[2],
+                state.parameters[3],
+                state.parameters[4]};
+      return {static_coefficient->value(x),
+              dynamic_coefficient->value(x),
+              weakening_distance->value(x),
+              cohesion_function->value(x),
+              forced_region->value(x) != 0 ? 1. : 0.};
+    }
+
+
+
     void
     LinearSlipWeakening::initialize_state(const Point<3> &x, State &state) const
     {
-      state              = State();
-      const double mu0   = static_coefficient->value(x);
-      const double mud   = dynamic_coefficient->value(x);
-      const double ld    = weakening_distance->value(x);
-      const double c     = cohesion_function->value(x);
-      const auto   where = [&]() {
+      state                           = State();
+      const auto [mu0, mud, ld, c, f] = point_parameters(x, state);
+      const auto where                = [&]() {
         std::ostringstream s;
         s << " at the fault point (" << x << ")";
         return s.str();
@@ -123,6 +139,9 @@ namespace rupture
                   ExcMessage("<Fault/Linear slip weakening/Cohesion> is " +
                              std::to_string(c) + where() +
                              ", but it must be >= 0 (Pa)."));
+      // The law's functions of position are evaluated once per point: a
+      // parsed expression costs far more than the rest of a node's step.
+      state.parameters = {mu0, mud, ld, c, f};
     }
 
 
@@ -134,12 +153,11 @@ namespace rupture
                                      const double,
                                      double &derivative) const
     {
-      const double mu0 = static_coefficient->value(x);
-      const double mud = dynamic_coefficient->value(x);
-      const double ld  = weakening_distance->value(x);
-      const double s   = old.slip_path + slip_increment;
-      double       mu  = mud;
-      derivative       = 0;
+      const auto [mu0, mud, ld, c, forced_point] = point_parameters(x, old);
+      (void)c;
+      const double s  = old.slip_path + slip_increment;
+      double       mu = mud;
+      derivative      = 0;
       if (!weakening_enabled)
         return mu0;
       if (s < ld)
@@ -147,7 +165,7 @@ namespace rupture
           derivative = -(mu0 - mud) / ld;
           mu         = mu0 - (mu0 - mud) * s / ld;
         }
-      if (forced_region->value(x) != 0)
+      if (forced_point != 0)
         {
           const double w =
             std::clamp((current_time - dynamic_start) / forced_time, 0., 1.);
@@ -166,16 +184,16 @@ namespace rupture
     bool
     LinearSlipWeakening::can_weaken(const Point<3> &x, const State &state) const
     {
-      return static_coefficient->value(x) > dynamic_coefficient->value(x) &&
-             state.slip_path < weakening_distance->value(x);
+      const auto p = point_parameters(x, state);
+      return p[0] > p[1] && state.slip_path < p[2];
     }
 
 
 
     double
-    LinearSlipWeakening::cohesion(const Point<3> &x) const
+    LinearSlipWeakening::cohesion(const Point<3> &x, const State &state) const
     {
-      return cohesion_function->value(x);
+      return point_parameters(x, state)[3];
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

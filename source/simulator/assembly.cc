@@ -3,6 +3,7 @@
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/hp/q_collection.h>
@@ -136,7 +137,7 @@ namespace rupture
 
           local_elasticity_matrices(
             fe_values, u, m, k, need_mass ? &mass : nullptr);
-          if (!stiffness_cell_by_cell)
+          if (!stiffness_matrix_free)
             hanging_constraints.distribute_local_to_global(k,
                                                            dofs,
                                                            stiffness_matrix);
@@ -220,7 +221,7 @@ namespace rupture
                                                          constant_load);
         }
 
-    if (!stiffness_cell_by_cell)
+    if (!stiffness_matrix_free)
       stiffness_matrix.compress(VectorOperation::add);
     if (need_mass)
       mass_matrix.compress(VectorOperation::add);
@@ -283,20 +284,7 @@ namespace rupture
     time_step            = duration / n_steps;
 
     if (scheme == Scheme::explicit_central_difference)
-      {
-        // (M (1 + gamma dt alpha) + gamma dt C_abs) a = r, diagonal.
-        const double g = time_parameters.gamma * time_step;
-        explicit_inverse_diagonal.reinit(locally_owned_dofs, communicator);
-        for (const auto i : locally_owned_dofs)
-          {
-            double d = lumped_mass(i) * (1 + g * rayleigh_alpha);
-            if (has_absorbing)
-              d += g * absorbing_damping(i);
-            explicit_inverse_diagonal(i) =
-              (increment_constraints.is_constrained(i) || d == 0) ? 0. : 1. / d;
-          }
-        explicit_inverse_diagonal.compress(VectorOperation::insert);
-      }
+      prepare_explicit_work();
     else if (scheme == Scheme::implicit_newmark)
       {
         // Effective stiffness of eq. 14: K + a0 M + a1 C, with
@@ -506,138 +494,22 @@ namespace rupture
 
 
 
-  /**
-   * The cell-by-cell stiffness operator: for each locally owned cell its
-   * DoFs (as local indices of a vector with ghosts) and its element matrix.
-   * Cells with the same shape key (offsets to 1e-10 of the smallest cell)
-   * share one stored matrix; once one matrix per 8 cells is stored, the
-   * element matrices of further shapes are recomputed at each use.
-   */
-  template <int dim>
-  struct Simulator<dim>::CellStiffness
-  {
-    static constexpr unsigned int recompute =
-      std::numeric_limits<unsigned int>::max();
-    std::vector<unsigned int>                                   offsets;
-    std::vector<unsigned int>                                   local_dofs;
-    std::vector<unsigned int>                                   matrix_index;
-    std::vector<FullMatrix<double>>                             matrices;
-    std::vector<typename DoFHandler<dim>::active_cell_iterator> recomputed;
-    mutable LinearAlgebra::distributed::Vector<double>          x, y;
-  };
-
-
-
   template <int dim>
   void
-  Simulator<dim>::setup_cell_stiffness()
+  Simulator<dim>::setup_matrix_free_stiffness()
   {
-    TimerOutput::Scope t(timer, "Cell stiffness set-up");
-    cell_stiffness.reset();
-    // With hanging nodes the products go through the constraints, cell by
-    // cell, with recomputed element matrices (apply_stiffness). Decided
-    // together, since the set-up below is collective.
-    if (dealii::Utilities::MPI::max(
-          hanging_constraints.n_constraints() > 0 ? 1u : 0u, communicator) > 0)
-      return;
-    auto       cs   = std::make_shared<CellStiffness>();
-    const auto part = std::make_shared<dealii::Utilities::MPI::Partitioner>(
-      locally_owned_dofs, locally_relevant_dofs, communicator);
-    cs->x.reinit(part);
-    cs->y.reinit(part);
-
-    const std::size_t max_matrices =
-      std::max<std::size_t>(64,
-                            triangulation.n_locally_owned_active_cells() / 8);
-    const double unit = 1e-10 * GridTools::minimal_cell_diameter(triangulation);
-    std::map<std::vector<std::int64_t>, unsigned int> shapes;
-    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>                    hp_values(fe_collection,
-                                q_cells,
-                                update_values | update_gradients |
-                                  update_JxW_values);
-    std::vector<types::global_dof_index> dofs;
-    cs->offsets.push_back(0);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (const auto dof : dofs)
-            cs->local_dofs.push_back(part->global_to_local(dof));
-          cs->offsets.push_back(cs->local_dofs.size());
-
-          const auto key   = cell_shape_key(cell, unit);
-          const auto found = shapes.find(key);
-          if (found != shapes.end())
-            cs->matrix_index.push_back(found->second);
-          else if (cs->matrices.size() < max_matrices)
-            {
-              hp_values.reinit(cell);
-              FullMatrix<double> k(dofs.size(), dofs.size());
-              local_elasticity_matrices<dim>(hp_values.get_present_fe_values(),
-                                             FEValuesExtractors::Vector(
-                                               cell->active_fe_index() * dim),
-                                             materials.get(cell->material_id()),
-                                             k,
-                                             nullptr);
-              shapes.emplace(key, cs->matrices.size());
-              cs->matrix_index.push_back(cs->matrices.size());
-              cs->matrices.push_back(std::move(k));
-            }
-          else
-            {
-              cs->matrix_index.push_back(CellStiffness::recompute);
-              cs->recomputed.push_back(cell);
-            }
-        }
-    const unsigned long n_stored = dealii::Utilities::MPI::sum(
-      static_cast<unsigned long>(cs->matrices.size()), communicator);
-    const unsigned long n_recomputed = dealii::Utilities::MPI::sum(
-      static_cast<unsigned long>(cs->recomputed.size()), communicator);
-    pcout << "   Stiffness operator: cell by cell, " << n_stored
-          << " stored element matrices, " << n_recomputed
-          << " cells recomputed at each product\n";
-    cell_stiffness = cs;
-  }
-
-
-
-  template <int dim>
-  template <typename Action>
-  void
-  Simulator<dim>::for_each_stored_cell_matrix(const Action &action) const
-  {
-    const CellStiffness               &cs = *cell_stiffness;
-    std::unique_ptr<hp::FEValues<dim>> hp_values;
-    FullMatrix<double>                 k;
-    auto                               recomputed = cs.recomputed.begin();
-    for (unsigned int c = 0; c + 1 < cs.offsets.size(); ++c)
-      {
-        const unsigned int  begin = cs.offsets[c];
-        const unsigned int  n     = cs.offsets[c + 1] - begin;
-        const unsigned int *dofs  = cs.local_dofs.data() + begin;
-        if (cs.matrix_index[c] != CellStiffness::recompute)
-          {
-            action(dofs, n, cs.matrices[cs.matrix_index[c]]);
-            continue;
-          }
-        if (!hp_values)
-          hp_values = std::make_unique<hp::FEValues<dim>>(
-            fe_collection,
-            hp::QCollection<dim>(QGauss<dim>(fe_degree + 1)),
-            update_values | update_gradients | update_JxW_values);
-        const auto &cell = *recomputed++;
-        hp_values->reinit(cell);
-        k.reinit(n, n);
-        local_elasticity_matrices<dim>(hp_values->get_present_fe_values(),
-                                       FEValuesExtractors::Vector(
-                                         cell->active_fe_index() * dim),
-                                       materials.get(cell->material_id()),
-                                       k,
-                                       nullptr);
-        action(dofs, n, k);
-      }
+    TimerOutput::Scope t(timer, "Matrix-free set-up");
+    elastic_operator = std::make_unique<Operators::ElasticOperator<dim>>();
+    elastic_operator->reinit(
+      MappingQ1<dim>(), dof_handler, hanging_constraints, materials, fe_degree);
+    elastic_operator->initialize_dof_vector(operator_src);
+    elastic_operator->initialize_dof_vector(operator_dst);
+    if (!test_mode)
+      pcout << "   Stiffness operator: matrix-free, "
+            << dealii::Utilities::MPI::sum(
+                 elastic_operator->memory_consumption(), communicator) /
+                 1048576
+            << " MB\n";
   }
 
 
@@ -646,64 +518,21 @@ namespace rupture
   void
   Simulator<dim>::apply_stiffness(const VectorType &x, VectorType &y) const
   {
-    if (!stiffness_cell_by_cell)
+    if (!stiffness_matrix_free)
       {
         stiffness_matrix.vmult(y, x);
         return;
       }
-    TimerOutput::Scope t(timer, "Stiffness product cell by cell");
-    if (cell_stiffness)
-      {
-        const CellStiffness &cs = *cell_stiffness;
-        // Both vectors number their owned entries in increasing global
-        // order, so the owned parts copy one to one.
-        const unsigned int n_owned = cs.x.locally_owned_size();
-        AssertDimension(static_cast<unsigned int>(x.locally_owned_size()),
-                        n_owned);
-        const double *xs = x.trilinos_vector()[0];
-        for (unsigned int i = 0; i < n_owned; ++i)
-          cs.x.local_element(i) = xs[i];
-        cs.x.update_ghost_values();
-        cs.y = 0;
-        std::vector<double> local_x;
-        for_each_stored_cell_matrix([&](const unsigned int       *dofs,
-                                        const unsigned int        n,
-                                        const FullMatrix<double> &k) {
-          local_x.resize(n);
-          for (unsigned int i = 0; i < n; ++i)
-            local_x[i] = cs.x.local_element(dofs[i]);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const double *row = &k(i, 0);
-              double        sum = 0;
-              for (unsigned int j = 0; j < n; ++j)
-                sum += row[j] * local_x[j];
-              cs.y.local_element(dofs[i]) += sum;
-            }
-        });
-        cs.y.compress(VectorOperation::add);
-        double *ys = y.trilinos_vector()[0];
-        for (unsigned int i = 0; i < n_owned; ++i)
-          ys[i] = cs.y.local_element(i);
-        return;
-      }
-    VectorType x_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
-    x_ghost = x;
-    y       = 0;
-    Vector<double> local_x, local_y;
-    for_each_cell_matrix(false,
-                         [&](const std::vector<types::global_dof_index> &dofs,
-                             FullMatrix<double>                         &k,
-                             const FullMatrix<double> &) {
-                           local_x.reinit(dofs.size());
-                           local_y.reinit(dofs.size());
-                           for (unsigned int i = 0; i < dofs.size(); ++i)
-                             local_x(i) = x_ghost(dofs[i]);
-                           k.vmult(local_y, local_x);
-                           hanging_constraints.distribute_local_to_global(
-                             local_y, dofs, y);
-                         });
-    y.compress(VectorOperation::add);
+    TimerOutput::Scope t(timer, "Stiffness product matrix-free");
+    // Both vectors number their owned entries in increasing global order,
+    // so the owned parts copy one to one.
+    const unsigned int n_owned = operator_src.locally_owned_size();
+    AssertDimension(static_cast<unsigned int>(x.locally_owned_size()), n_owned);
+    const double *xs = x.trilinos_vector()[0];
+    std::copy(xs, xs + n_owned, operator_src.begin());
+    elastic_operator->vmult(operator_dst, operator_src);
+    double *ys = y.trilinos_vector()[0];
+    std::copy(operator_dst.begin(), operator_dst.begin() + n_owned, ys);
   }
 
 
@@ -718,23 +547,8 @@ namespace rupture
   {
     std::vector<types::global_dof_index> dofs;
     FullMatrix<double>                   k, mass;
-    if (cell_stiffness && !with_mass)
-      {
-        // The stored element matrices (copied: the action may scale them).
-        const auto &part = *cell_stiffness->x.get_partitioner();
-        for_each_stored_cell_matrix([&](const unsigned int       *local,
-                                        const unsigned int        n,
-                                        const FullMatrix<double> &stored) {
-          dofs.resize(n);
-          for (unsigned int i = 0; i < n; ++i)
-            dofs[i] = part.local_to_global(local[i]);
-          k = stored;
-          action(dofs, k, mass);
-        });
-        return;
-      }
-    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>          hp_values(fe_collection,
+    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
+    hp::FEValues<dim>                    hp_values(fe_collection,
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);

@@ -57,6 +57,29 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::distribute_hanging(VectorType &v) const
+  {
+    hanging_distributor.distribute(v.trilinos_vector()[0]);
+  }
+
+
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::current_load(const double time)
+  {
+    if (!has_body_force)
+      return constant_load;
+    if (step_load.size() != constant_load.size())
+      step_load.reinit(constant_load);
+    assemble_load_vector(time, step_load);
+    return step_load;
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::apply_mass(const VectorType &x, VectorType &y) const
   {
     if (use_lumped_mass)
@@ -272,7 +295,7 @@ namespace rupture
         SolverCG<VectorType> cg(control);
         acceleration = 0;
         cg.solve(op, acceleration, r, jacobi);
-        hanging_constraints.distribute(acceleration);
+        distribute_hanging(acceleration);
       }
     else
       acceleration = 0;
@@ -311,8 +334,8 @@ namespace rupture
         }
     displacement.compress(VectorOperation::insert);
     velocity.compress(VectorOperation::insert);
-    hanging_constraints.distribute(displacement);
-    hanging_constraints.distribute(velocity);
+    distribute_hanging(displacement);
+    distribute_hanging(velocity);
 
     VectorType load(locally_owned_dofs, communicator);
     assemble_load_vector(0, load);
@@ -483,7 +506,7 @@ namespace rupture
         displacement += scratch;
       }
     add_kinematic_increment(displacement);
-    hanging_constraints.distribute(displacement);
+    distribute_hanging(displacement);
 
     double        reference         = 0;
     double        increment_norm    = 0;
@@ -903,104 +926,22 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::explicit_step()
-  {
-    TimerOutput::Scope t(timer, "Explicit step");
-    const double       gamma = time_parameters.gamma;
-    const VectorType   old_u(displacement);
-    VectorType load(displacement), residual(displacement), tmp(displacement),
-      cv(displacement);
-    assemble_load_vector(time, load);
-
-    // Predictors: u = u + dt v + dt^2/2 a, v~ = v + (1 - gamma) dt a.
-    displacement.add(time_step,
-                     velocity,
-                     0.5 * time_step * time_step,
-                     acceleration);
-    velocity.add((1 - gamma) * time_step, acceleration);
-    for (const auto &k : kinematic_dofs)
-      displacement(k.dof) =
-        old_u(k.dof) +
-        kinematic_velocity(k, time - 0.5 * time_step) * time_step;
-    displacement.compress(VectorOperation::insert);
-    set_kinematic_velocity(velocity);
-    hanging_constraints.distribute(displacement);
-
-    // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
-    //   - alpha M v~ - C_abs v~; the stiffness damping uses the predictor.
-    VectorType kw(displacement);
-    kw.add(rayleigh_beta, velocity);
-    apply_stiffness(kw, tmp);
-    kw       = tmp;
-    residual = load;
-    residual -= kw;
-    compute_damping_force(velocity, cv);
-    if (rayleigh_beta != 0)
-      {
-        // cv holds beta K v~ too, which is already in kw.
-        apply_stiffness(velocity, tmp);
-        cv.add(-rayleigh_beta, tmp);
-      }
-    residual -= cv;
-    VectorType fault_force(displacement);
-    fault_force = 0;
-    if (fault)
-      {
-        assemble_split_node_force(velocity, residual, false, fault_force);
-        residual -= fault_force;
-      }
-    acceleration = residual;
-    acceleration.scale(explicit_inverse_diagonal);
-    velocity.add(gamma * time_step, acceleration);
-    hanging_constraints.distribute(acceleration);
-    hanging_constraints.distribute(velocity);
-    check_finite(displacement, "displacement");
-
-    // Residual of the new state, for the reactions in the energy budget.
-    // Without stiffness damping K u is already known.
-    VectorType ku(displacement);
-    if (rayleigh_beta == 0)
-      ku = kw;
-    else
-      apply_stiffness(displacement, ku);
-    residual = load;
-    residual -= ku;
-    apply_mass(acceleration, tmp);
-    residual -= tmp;
-    compute_damping_force(velocity, cv);
-    residual -= cv;
-    if (fault)
-      {
-        residual -= fault_force;
-        VectorType increment(displacement);
-        increment -= old_u;
-        fault_work +=
-          0.5 * ((fault_force * increment) + (contact_force * increment));
-        contact_force = fault_force;
-        fault->commit(time_step, time);
-      }
-    update_energy(old_u, load, residual, cv, &ku);
-  }
-
-
-
-  template <int dim>
-  void
   Simulator<dim>::assemble_split_node_force(const VectorType &predicted_v,
                                             const VectorType &residual,
                                             const bool        initial,
                                             VectorType       &force)
   {
     TimerOutput::Scope t(timer, "Fault split nodes");
-    VectorType u(locally_owned_dofs, locally_relevant_dofs, communicator);
-    VectorType v(u), r(u), m(u);
-    u = displacement;
-    v = predicted_v;
-    r = residual;
     // The initial acceleration uses the lumped mass alone (see
     // compute_acceleration()), a step the effective diagonal.
     if (!initial)
-      m = explicit_inverse_diagonal;
+      fault->assemble_split_node(displacement,
+                                 predicted_v,
+                                 residual,
+                                 explicit_inverse_diagonal,
+                                 time_step,
+                                 time_parameters.gamma,
+                                 force);
     else
       {
         VectorType inverse(residual);
@@ -1010,10 +951,14 @@ namespace rupture
               1. / lumped_mass(i) :
               0.;
         inverse.compress(VectorOperation::insert);
-        m = inverse;
+        fault->assemble_split_node(displacement,
+                                   predicted_v,
+                                   residual,
+                                   inverse,
+                                   time_step,
+                                   time_parameters.gamma,
+                                   force);
       }
-    fault->assemble_split_node(
-      u, v, r, m, time_step, time_parameters.gamma, hanging_constraints, force);
   }
 
 

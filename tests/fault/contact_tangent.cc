@@ -71,9 +71,10 @@ check(const std::string                  &title,
           scale           = std::max(scale, std::abs(r.tangent[i][j]));
         }
     }
-  const double tn       = r.traction * n;
-  const double tt       = (r.traction - tn * n).norm();
-  const double strength = r.friction * std::max(-tn, 0.) + law.cohesion(x);
+  const double tn = r.traction * n;
+  const double tt = (r.traction - tn * n).norm();
+  const double strength =
+    r.friction * std::max(-tn, 0.) + law.cohesion(x, state);
   std::printf("%d-D %-34s %-5s T_n = %9.4f MPa, |T_t| = %8.4f MPa, "
               "strength %8.4f MPa, slip increment %.4e m, mu %.4f\n",
               dim,

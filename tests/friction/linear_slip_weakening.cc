@@ -59,7 +59,7 @@ main(int argc, char **argv)
     {
       std::printf("rejected\n");
     }
-  std::printf("cohesion: %.0f Pa\n", law->cohesion(far));
+  std::printf("cohesion: %.0f Pa\n", law->cohesion(far, state));
 
   // The state after a step: the slip path accumulates.
   rupture::Friction::State old, updated;

@@ -1,6 +1,7 @@
 #ifndef rupture_fault_fault_h
 #define rupture_fault_fault_h
 
+#include <rupture/base/sparse_gather.h>
 #include <rupture/fault/contact.h>
 #include <rupture/friction/interface.h>
 
@@ -179,25 +180,26 @@ namespace rupture
        * The traction-at-split-node method (Day et al. 2005) for the
        * explicit scheme. Given the predicted displacement @p u at the end of
        * the step, the predicted velocity @p v (v + (1 - gamma) dt a), the
-       * residual force @p residual without the fault (all with ghost
-       * entries) and the inverse of the diagonal (lumped) mass
+       * residual force @p residual without the fault (all without ghost
+       * entries: the pairs' values are exchanged alone) and the inverse of
+       * the diagonal (lumped) mass
        * @p inverse_mass, compute for each pair the traction that keeps its
        * two nodes together over the next step, open it under tension or
        * limit its shear part by the friction strength, and add the fault's
-       * internal forces (as in assemble()) to @p force. With gamma = 1/2 the
+       * internal forces (as in assemble()) to @p force, on the owners of
+       * the DoFs (no compress() is needed). With gamma = 1/2 the
        * slip rate of the half step that follows is what the traction
        * controls, as in central differences. The states stay trial states
        * until commit().
        */
       void
-      assemble_split_node(const VectorType                &u,
-                          const VectorType                &v,
-                          const VectorType                &residual,
-                          const VectorType                &inverse_mass,
-                          const double                     dt,
-                          const double                     gamma,
-                          const AffineConstraints<double> &force_constraints,
-                          VectorType                      &force);
+      assemble_split_node(const VectorType &u,
+                          const VectorType &v,
+                          const VectorType &residual,
+                          const VectorType &inverse_mass,
+                          const double      dt,
+                          const double      gamma,
+                          VectorType       &force);
 
       /**
        * Accept the trial states of the last assemble() as the new state.
@@ -361,6 +363,11 @@ namespace rupture
       // Locally owned pairs (owned by the owner of the minus DoF of
       // component 0).
       std::vector<NodePair> pairs;
+      /// The DoFs of the pairs (minus then plus components, pair by pair)
+      /// in the vectors of the split-node method, and the values read from
+      /// or added to them.
+      SparseGather                pair_dofs;
+      mutable std::vector<double> pair_values[4];
       /// Fault faces of locally owned cells, as vertex keys.
       std::vector<std::vector<types::global_dof_index>> owned_faces;
       unsigned int                                      n_global_split    = 0;

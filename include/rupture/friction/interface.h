@@ -36,6 +36,10 @@ namespace rupture
       /// State variables of rate-and-state laws (theta, ...), in the units
       /// the law documents.
       std::vector<double> variables;
+      /// Constants of the law at this point, evaluated once from its
+      /// functions of position by initialize_state(), so that a step does
+      /// not evaluate them again (the law documents which).
+      std::vector<double> parameters;
     };
 
     class Interface
@@ -68,7 +72,7 @@ namespace rupture
        * The cohesion (Pa) at @p x: strength = mu |sigma_n| + cohesion.
        */
       virtual double
-      cohesion(const Point<3> &x) const = 0;
+      cohesion(const Point<3> &x, const State &state) const = 0;
 
       /**
        * The state after the step.

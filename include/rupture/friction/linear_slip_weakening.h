@@ -42,12 +42,18 @@ namespace rupture
                   double         &derivative) const override;
 
       double
-      cohesion(const Point<3> &x) const override;
+      cohesion(const Point<3> &x, const State &state) const override;
 
       bool
       can_weaken(const Point<3> &x, const State &state) const override;
 
     private:
+      /// mu_0, mu_d, L_d, cohesion and the forced-region flag at @p x:
+      /// from the state's cached parameters once initialize_state() has
+      /// stored them there, else evaluated.
+      std::array<double, 5>
+      point_parameters(const Point<3> &x, const State &state) const;
+
       std::unique_ptr<FunctionParser<3>> static_coefficient;
       std::unique_ptr<FunctionParser<3>> dynamic_coefficient;
       std::unique_ptr<FunctionParser<3>> weakening_distance;

@@ -1,9 +1,11 @@
 #ifndef rupture_simulator_simulator_h
 #define rupture_simulator_simulator_h
 
+#include <rupture/base/constraint_distributor.h>
 #include <rupture/fault/fault.h>
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
+#include <rupture/operators/elastic_operator.h>
 #include <rupture/output/log.h>
 #include <rupture/output/receivers.h>
 #include <rupture/output/statistics.h>
@@ -134,8 +136,19 @@ namespace rupture
       /// A few words for the screen when the step is cut.
       std::string reason;
     };
+    /// One step of central differences (explicit_step.cc).
     void
     explicit_step();
+    /// The diagonal and the work vectors of the explicit step.
+    void
+    prepare_explicit_work();
+    /// The load vector at @p time: the constant part, plus the body force
+    /// if there is one.
+    const VectorType &
+    current_load(const double time);
+    /// Set the hanging and welded DoFs of @p v from their constraints.
+    void
+    distribute_hanging(VectorType &v) const;
     void
     quasi_static_step();
     /**
@@ -183,19 +196,12 @@ namespace rupture
                 const VectorType &new_damping_force);
     void
     apply_mass(const VectorType &x, VectorType &y) const;
-    /// y = K x, with the stored matrix or cell by cell.
+    /// y = K x, with the stored matrix or matrix-free.
     void
     apply_stiffness(const VectorType &x, VectorType &y) const;
-    /// The element matrices and DoF lists of the cell-by-cell operator.
+    /// Set up the matrix-free stiffness operator and its vectors.
     void
-    setup_cell_stiffness();
-    /// Call @p action with the local DoF indices, their number and the
-    /// element stiffness of each locally owned cell of the cell-by-cell
-    /// operator (stored or recomputed). A template (defined and used in
-    /// assembly.cc only), so that the action inlines into the loop.
-    template <typename Action>
-    void
-    for_each_stored_cell_matrix(const Action &action) const;
+    setup_matrix_free_stiffness();
     /// Call @p action with the DoF indices, the stiffness matrix and (if
     /// @p with_mass) the consistent mass matrix of each locally owned cell.
     void
@@ -237,6 +243,9 @@ namespace rupture
     write_step_output(const bool force);
     std::vector<double>
     statistics_row() const;
+    /// Wall time of the time steps per DoF-step, and the peak memory.
+    void
+    print_performance_summary() const;
 
     MPI_Comm            communicator;
     Output::Log         log;
@@ -249,16 +258,18 @@ namespace rupture
     unsigned int n_global_refinements;
     unsigned int fe_degree;
     bool         use_lumped_mass;
-    bool         stiffness_cell_by_cell = false;
-    /// The cell-by-cell stiffness operator (assembly.cc), if used.
-    struct CellStiffness;
-    std::shared_ptr<CellStiffness> cell_stiffness;
-    double                         rayleigh_alpha;
-    double                         rayleigh_beta;
-    double                         gravity;
-    double                         output_interval;
-    unsigned int                   screen_interval;
-    TimeIntegration::Parameters    time_parameters;
+    bool         stiffness_matrix_free = true;
+    /// The matrix-free stiffness operator, if used, and the vectors that
+    /// carry its argument and result.
+    std::unique_ptr<Operators::ElasticOperator<dim>>   elastic_operator;
+    mutable LinearAlgebra::distributed::Vector<double> operator_src;
+    mutable LinearAlgebra::distributed::Vector<double> operator_dst;
+    double                                             rayleigh_alpha;
+    double                                             rayleigh_beta;
+    double                                             gravity;
+    double                                             output_interval;
+    unsigned int                                       screen_interval;
+    TimeIntegration::Parameters                        time_parameters;
     /// The scheme of the phase being run.
     TimeIntegration::Scheme              current_scheme;
     std::unique_ptr<FunctionParser<dim>> body_force;
@@ -308,8 +319,26 @@ namespace rupture
     VectorType                       lumped_mass;
     VectorType                       absorbing_damping;
     VectorType                       explicit_inverse_diagonal;
-    VectorType                       constant_load;
-    bool                             has_absorbing;
+    /// Work vectors of the explicit step, kept between steps: the
+    /// displacement at the start of the step, K u, the residual and the
+    /// fault's forces. And the load of the step if it varies.
+    VectorType old_displacement, stiffness_force, step_residual, fault_force,
+      step_load;
+    /// What each locally owned DoF is, for the explicit step's energy
+    /// budget.
+    enum DofKind : unsigned char
+    {
+      free,
+      /// Tied to others: a hanging or welded node.
+      tied,
+      /// Held by a kinematic boundary condition.
+      kinematic
+    };
+    std::vector<unsigned char> dof_kind;
+    /// Sets the tied DoFs of a vector.
+    ConstraintDistributor hanging_distributor;
+    VectorType            constant_load;
+    bool                  has_absorbing;
 
     // State.
     double time;
@@ -372,7 +401,9 @@ namespace rupture
     unsigned int substep_depth     = 0;
     unsigned int steps_without_cut = 0;
     double       wall_time_start;
-    double       next_output_time;
+    /// Wall time spent in the time loops (s), and their number of steps.
+    double time_loop_seconds = 0;
+    double next_output_time;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     Output::Statistics                         statistics;

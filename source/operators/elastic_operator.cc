@@ -1,0 +1,171 @@
+#include <rupture/operators/elastic_operator.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/matrix_free.h>
+
+namespace rupture
+{
+  namespace Operators
+  {
+    template <int dim>
+    struct ElasticOperator<dim>::Implementation
+    {
+      using Number = VectorizedArray<double>;
+
+      MatrixFree<dim, double> matrix_free;
+      unsigned int            fe_degree = 1;
+      /// Lame constants of each cell batch (one lane a cell).
+      AlignedVector<Number> lambda, mu;
+
+      /**
+       * K src on the cells of @p range: all of one active FE index, that
+       * is one side of the fault, whose displacement starts at component
+       * side * dim.
+       */
+      template <int degree>
+      void
+      local_apply(const MatrixFree<dim, double>               &data,
+                  VectorType                                  &dst,
+                  const VectorType                            &src,
+                  const std::pair<unsigned int, unsigned int> &range) const
+      {
+        const unsigned int side = data.get_cell_active_fe_index(range);
+        constexpr int      n_q  = (degree < 0 ? 0 : degree + 1);
+        FEEvaluation<dim, degree, n_q, dim, double> phi(
+          data, range, 0, 0, side * dim);
+        for (unsigned int cell = range.first; cell < range.second; ++cell)
+          {
+            phi.reinit(cell);
+            phi.read_dof_values(src);
+            phi.evaluate(EvaluationFlags::gradients);
+            const Number l = lambda[cell];
+            const Number m = mu[cell];
+            for (const unsigned int q : phi.quadrature_point_indices())
+              {
+                SymmetricTensor<2, dim, Number> eps =
+                  phi.get_symmetric_gradient(q);
+                const Number trace = trace_of(eps);
+                eps *= 2. * m;
+                for (unsigned int d = 0; d < dim; ++d)
+                  eps[d][d] += l * trace;
+                phi.submit_symmetric_gradient(eps, q);
+              }
+            phi.integrate(EvaluationFlags::gradients);
+            phi.distribute_local_to_global(dst);
+          }
+      }
+
+      static Number
+      trace_of(const SymmetricTensor<2, dim, Number> &t)
+      {
+        Number s = t[0][0];
+        for (unsigned int d = 1; d < dim; ++d)
+          s += t[d][d];
+        return s;
+      }
+    };
+
+
+
+    template <int dim>
+    ElasticOperator<dim>::ElasticOperator()
+      : impl(std::make_unique<Implementation>())
+    {}
+
+
+
+    template <int dim>
+    ElasticOperator<dim>::~ElasticOperator() = default;
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::reinit(const Mapping<dim>               &mapping,
+                                 const DoFHandler<dim>            &dof_handler,
+                                 const AffineConstraints<double>  &constraints,
+                                 const Material::ElasticMaterials &materials,
+                                 const unsigned int                fe_degree)
+    {
+      impl                 = std::make_unique<Implementation>();
+      impl->fe_degree      = fe_degree;
+      using AdditionalData = typename MatrixFree<dim, double>::AdditionalData;
+      AdditionalData data;
+      data.tasks_parallel_scheme = AdditionalData::none;
+      data.mapping_update_flags  = update_gradients | update_JxW_values;
+      impl->matrix_free.reinit(
+        mapping, dof_handler, constraints, QGauss<1>(fe_degree + 1), data);
+
+      const unsigned int n_batches = impl->matrix_free.n_cell_batches();
+      impl->lambda.resize(n_batches);
+      impl->mu.resize(n_batches);
+      for (unsigned int b = 0; b < n_batches; ++b)
+        for (unsigned int v = 0;
+             v < impl->matrix_free.n_active_entries_per_cell_batch(b);
+             ++v)
+          {
+            const auto &m = materials.get(
+              impl->matrix_free.get_cell_iterator(b, v)->material_id());
+            impl->lambda[b][v] = m.lambda;
+            impl->mu[b][v]     = m.mu;
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::initialize_dof_vector(VectorType &v) const
+    {
+      impl->matrix_free.initialize_dof_vector(v);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::vmult(VectorType &dst, const VectorType &src) const
+    {
+      const Implementation &i = *impl;
+      switch (i.fe_degree)
+        {
+          case 1:
+            i.matrix_free.cell_loop(
+              &Implementation::template local_apply<1>, &i, dst, src, true);
+            break;
+          case 2:
+            i.matrix_free.cell_loop(
+              &Implementation::template local_apply<2>, &i, dst, src, true);
+            break;
+          default:
+            i.matrix_free.cell_loop(
+              &Implementation::template local_apply<-1>, &i, dst, src, true);
+        }
+    }
+
+
+
+    template <int dim>
+    unsigned long
+    ElasticOperator<dim>::n_dofs() const
+    {
+      return impl->matrix_free.get_dof_handler().n_dofs();
+    }
+
+
+
+    template <int dim>
+    std::size_t
+    ElasticOperator<dim>::memory_consumption() const
+    {
+      return impl->matrix_free.memory_consumption() +
+             impl->lambda.memory_consumption() + impl->mu.memory_consumption();
+    }
+
+
+
+    template class ElasticOperator<2>;
+    template class ElasticOperator<3>;
+  } // namespace Operators
+} // namespace rupture
