@@ -1,20 +1,56 @@
+// Debian's deal.II is configured without SIMD (VectorizedArray of width
+// one), which leaves the sum-factorisation kernels scalar. Where this file
+// is compiled for a CPU with AVX (RUPTURE_SIMD, see CMakeLists.txt), it
+// enables deal.II's own AVX VectorizedArray<double, 4> here, and
+// instantiates the MatrixFree templates for it from deal.II's headers.
+#include <deal.II/base/config.h>
+#if defined(RUPTURE_SIMD) && defined(__AVX__) && \
+  DEAL_II_VECTORIZATION_WIDTH_IN_BITS < 256
+#  undef DEAL_II_VECTORIZATION_WIDTH_IN_BITS
+#  define DEAL_II_VECTORIZATION_WIDTH_IN_BITS 256
+#  undef DEAL_II_COMPILER_VECTORIZATION_LEVEL
+#  define DEAL_II_COMPILER_VECTORIZATION_LEVEL 2
+#  define RUPTURE_SIMD_INSTANTIATE
+#endif
+
 #include <rupture/operators/elastic_operator.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
+#ifdef RUPTURE_SIMD_INSTANTIATE
+#  include <deal.II/matrix_free/dof_info.templates.h>
+#  include <deal.II/matrix_free/evaluation_template_factory.templates.h>
+#  include <deal.II/matrix_free/mapping_info.templates.h>
+#  include <deal.II/matrix_free/matrix_free.templates.h>
+#  include <deal.II/matrix_free/shape_info.templates.h>
+// (deal.II 9.4 gives this file the include guard of the one above)
+#  undef dealii_matrix_free_evaluation_template_factory_templates_h
+#  include <deal.II/matrix_free/evaluation_template_face_factory.templates.h>
+#  include <deal.II/matrix_free/evaluation_template_factory_hanging_nodes.templates.h>
+#endif
 
 namespace rupture
 {
+  namespace
+  {
+#ifdef RUPTURE_SIMD_INSTANTIATE
+    constexpr std::size_t simd_width = 4;
+#else
+    constexpr std::size_t simd_width = 1;
+#endif
+  } // namespace
+
   namespace Operators
   {
     template <int dim>
     struct ElasticOperator<dim>::Implementation
     {
-      using Number = VectorizedArray<double>;
+      using Number = VectorizedArray<double, simd_width>;
+      using MF     = MatrixFree<dim, double, Number>;
 
-      MatrixFree<dim, double> matrix_free;
-      unsigned int            fe_degree = 1;
+      MF           matrix_free;
+      unsigned int fe_degree = 1;
       /// Lame constants of each cell batch (one lane a cell).
       AlignedVector<Number> lambda, mu;
 
@@ -25,14 +61,14 @@ namespace rupture
        */
       template <int degree>
       void
-      local_apply(const MatrixFree<dim, double>               &data,
+      local_apply(const MF                                    &data,
                   VectorType                                  &dst,
                   const VectorType                            &src,
                   const std::pair<unsigned int, unsigned int> &range) const
       {
         const unsigned int side = data.get_cell_active_fe_index(range);
         constexpr int      n_q  = (degree < 0 ? 0 : degree + 1);
-        FEEvaluation<dim, degree, n_q, dim, double> phi(
+        FEEvaluation<dim, degree, n_q, dim, double, Number> phi(
           data, range, 0, 0, side * dim);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
           {
@@ -90,7 +126,7 @@ namespace rupture
     {
       impl                 = std::make_unique<Implementation>();
       impl->fe_degree      = fe_degree;
-      using AdditionalData = typename MatrixFree<dim, double>::AdditionalData;
+      using AdditionalData = typename Implementation::MF::AdditionalData;
       AdditionalData data;
       data.tasks_parallel_scheme = AdditionalData::none;
       data.mapping_update_flags  = update_gradients | update_JxW_values;
@@ -169,3 +205,22 @@ namespace rupture
     template class ElasticOperator<3>;
   } // namespace Operators
 } // namespace rupture
+
+#ifdef RUPTURE_SIMD_INSTANTIATE
+// The parts of deal.II's MatrixFree that are only compiled into libdeal_II
+// for its own (scalar) VectorizedArray; instantiated here for the wide one.
+namespace dealii
+{
+  namespace internal
+  {
+    template struct FEFaceEvaluationFactory<2, VectorizedArray<double, 4>>;
+    template struct FEFaceEvaluationFactory<3, VectorizedArray<double, 4>>;
+    template struct FEEvaluationHangingNodesFactory<2,
+                                                    double,
+                                                    VectorizedArray<double, 4>>;
+    template struct FEEvaluationHangingNodesFactory<3,
+                                                    double,
+                                                    VectorizedArray<double, 4>>;
+  } // namespace internal
+} // namespace dealii
+#endif

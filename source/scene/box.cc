@@ -45,6 +45,20 @@ namespace rupture
           "material changes, e.g. '-2000, -10000'. Empty for a homogeneous "
           "box. The top layer is material id 0, the next one down 1, and so "
           "on. The mesh is built so that each interface is a mesh surface.");
+        prm.declare_entry(
+          "Tree levels",
+          "auto",
+          Patterns::Anything(),
+          "The box is built as a coarse mesh of blocks of 2^n cells in each "
+          "direction, refined n times; the cells are the same whatever n. "
+          "Every coarse cell is a tree of the distributed mesh (p4est), "
+          "stored on every rank, so a large box built of coarse cells only "
+          "needs several times the memory of its DoFs, on each rank. 'auto' "
+          "(the default) takes n = 3 for boxes of more than 32768 cells and "
+          "n = 0 otherwise; or give n from 0 to 4. A uniform or layered box "
+          "uses the largest n up to this one that divides its numbers of "
+          "cells; a graded box halves its largest outer cells where needed "
+          "to make the numbers of cells divisible by 2^n.");
         prm.enter_subsection("Grading");
         {
           prm.declare_entry(
@@ -113,6 +127,24 @@ namespace rupture
             n_cells.push_back(static_cast<unsigned int>(c));
           }
 
+        {
+          const std::string levels = prm.get("Tree levels");
+          if (levels.find_first_not_of(" \t") == std::string::npos ||
+              levels.find("auto") != std::string::npos)
+            tree_levels = -1;
+          else
+            {
+              const std::vector<double> v =
+                Utilities::parse_doubles(levels, "Scene/Box/Tree levels");
+              const double n = v.size() == 1 ? v[0] : -1;
+              AssertThrow(n >= 0 && n <= 4 && n == std::floor(n),
+                          ExcMessage("<Scene/Box/Tree levels> must be 'auto' "
+                                     "or an integer from 0 to 4, but is '" +
+                                     levels + "'."));
+              tree_levels = static_cast<int>(n);
+            }
+        }
+
         layer_interfaces =
           Utilities::parse_doubles(prm.get("Layer interfaces"),
                                    "Scene/Box/Layer interfaces");
@@ -167,7 +199,8 @@ namespace rupture
 
     template <int dim>
     std::vector<double>
-    Box<dim>::graded_steps(const unsigned int d) const
+    Box<dim>::graded_steps(const unsigned int d,
+                           const unsigned int multiple) const
     {
       const double h = (core_upper[d] - core_lower[d]) / n_cells[d];
       // Cells growing by the factor from h r on, enough to cover the
@@ -185,12 +218,106 @@ namespace rupture
           c *= distance / sum;
         return cells;
       };
-      std::vector<double> steps = outer(core_lower[d] - lower_corner[d]);
-      std::reverse(steps.begin(), steps.end());
+      std::vector<double> lower = outer(core_lower[d] - lower_corner[d]);
+      std::vector<double> upper = outer(upper_corner[d] - core_upper[d]);
+      // Halve the largest outer cells until the number of cells is a
+      // multiple of @p multiple (the outermost cells, far from the core).
+      while ((lower.size() + n_cells[d] + upper.size()) % multiple != 0 &&
+             !(lower.empty() && upper.empty()))
+        {
+          std::vector<double> &side =
+            (lower.empty() ||
+             (!upper.empty() && upper.back() >= lower.back())) ?
+              upper :
+              lower;
+          const auto   largest = std::max_element(side.begin(), side.end());
+          const double half    = (*largest /= 2);
+          side.insert(largest, half);
+        }
+      std::vector<double> steps(lower.rbegin(), lower.rend());
       steps.insert(steps.end(), n_cells[d], h);
-      const std::vector<double> upper = outer(upper_corner[d] - core_upper[d]);
       steps.insert(steps.end(), upper.begin(), upper.end());
       return steps;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Box<dim>::n_tree_levels() const
+    {
+      unsigned int n_total = 1;
+      for (unsigned int d = 0; d < dim; ++d)
+        n_total *= (growth_factor > 1 ? graded_steps(d, 1).size() : n_cells[d]);
+      unsigned int levels =
+        tree_levels >= 0 ? tree_levels : (n_total > 32768 ? 3 : 0);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const bool has_outer =
+            growth_factor > 1 && (core_lower[d] > lower_corner[d] ||
+                                  core_upper[d] < upper_corner[d]);
+          const unsigned int n =
+            (growth_factor > 1 ? graded_steps(d, 1).size() : n_cells[d]);
+          // At least one coarse cell in each direction; without outer
+          // cells to halve, a number of levels that divides the cells.
+          while (levels > 0 && ((1u << levels) > n ||
+                                (!has_outer && n % (1u << levels) != 0)))
+            --levels;
+        }
+      return levels;
+    }
+
+
+
+    template <int dim>
+    void
+    Box<dim>::build_tensor_mesh(
+      parallel::distributed::Triangulation<dim> &triangulation,
+      const std::vector<std::vector<double>>    &steps,
+      const unsigned int                         levels) const
+    {
+      // The vertex coordinates along each direction, and the coarse cells:
+      // blocks of 2^levels cells, refined levels times below; the refined
+      // vertices are then moved to the coordinates of the cells asked for.
+      const unsigned int               m = 1u << levels;
+      std::vector<std::vector<double>> x(dim), coarse(dim), coarse_x(dim);
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          Assert(steps[d].size() % m == 0, ExcInternalError());
+          x[d].push_back(lower_corner[d]);
+          for (const double step : steps[d])
+            x[d].push_back(x[d].back() + step);
+          x[d].back() = upper_corner[d];
+          for (unsigned int k = 0; k * m < steps[d].size(); ++k)
+            {
+              coarse[d].push_back(x[d][(k + 1) * m] - x[d][k * m]);
+              coarse_x[d].push_back(x[d][k * m]);
+            }
+          coarse_x[d].push_back(upper_corner[d]);
+        }
+      GridGenerator::subdivided_hyper_rectangle(
+        triangulation, coarse, lower_corner, upper_corner, true);
+      if (levels == 0)
+        return;
+      triangulation.refine_global(levels);
+      GridTools::transform(
+        [&](const Point<dim> &p) {
+          Point<dim> q;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const std::vector<double> &c        = coarse_x[d];
+              const unsigned int         n_coarse = c.size() - 1;
+              unsigned int               k =
+                std::upper_bound(c.begin(), c.end(), p[d]) - c.begin();
+              k              = std::min(std::max(k, 1u), n_coarse) - 1;
+              const double f = (p[d] - c[k]) / (c[k + 1] - c[k]);
+              const long   j = std::lround(f * m);
+              q[d]           = x[d][std::min<long>(std::max<long>(k * m + j, 0),
+                                         x[d].size() - 1)];
+            }
+          return q;
+        },
+        triangulation);
     }
 
 
@@ -200,13 +327,13 @@ namespace rupture
     Box<dim>::create_coarse_mesh(
       parallel::distributed::Triangulation<dim> &triangulation) const
     {
+      const unsigned int levels = n_tree_levels();
       if (growth_factor > 1)
         {
           std::vector<std::vector<double>> steps(dim);
           for (unsigned int d = 0; d < dim; ++d)
-            steps[d] = graded_steps(d);
-          GridGenerator::subdivided_hyper_rectangle(
-            triangulation, steps, lower_corner, upper_corner, true);
+            steps[d] = graded_steps(d, 1u << levels);
+          build_tensor_mesh(triangulation, steps, levels);
           // The vertices are sums of the cell sizes from the lower corner,
           // so the round-off of the scaled outer cells shifts the core's
           // vertices by some 1e-12 m. Put them exactly on the core's grid:
@@ -262,8 +389,11 @@ namespace rupture
           steps[dim - 1].push_back((breaks[l] - breaks[l + 1]) /
                                    layer_cells[l]);
 
-      GridGenerator::subdivided_hyper_rectangle(
-        triangulation, steps, lower_corner, upper_corner, true);
+      unsigned int layered_levels = levels;
+      while (layered_levels > 0 &&
+             steps[dim - 1].size() % (1u << layered_levels) != 0)
+        --layered_levels;
+      build_tensor_mesh(triangulation, steps, layered_levels);
 
       for (const auto &cell : triangulation.active_cell_iterators())
         {

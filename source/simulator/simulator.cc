@@ -300,9 +300,13 @@ namespace rupture
           << dealii::Utilities::MPI::n_mpi_processes(communicator)
           << " MPI rank(s)\n";
 
+    record_memory("start");
     make_mesh();
+    record_memory("mesh");
     setup_dofs();
+    record_memory("DoFs and fault");
     assemble_physics_matrices();
+    record_memory("operators");
 
     // Everything that can reject the input has run; only now is the output
     // directory touched, so a bad input never destroys earlier results.
@@ -536,38 +540,41 @@ namespace rupture
     increment_constraints.clear();
     increment_constraints.reinit(locally_relevant_dofs);
     kinematic_dofs.clear();
-    std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
-                                           MappingQ1<dim>()),
-                                         dof_handler,
-                                         support_points);
-    std::vector<types::global_dof_index> face_dofs;
     for (const auto &bc : boundary_conditions.kinematic)
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial())
+      for_each_support_point(
+        [&](const auto &cell) {
+          if (cell->is_artificial())
+            return false;
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&
                 cell->face(f)->boundary_id() == bc.id)
-              {
-                const auto &fe = cell->get_fe();
-                face_dofs.resize(fe.n_dofs_per_face(f));
-                cell->face(f)->get_dof_indices(face_dofs,
-                                               cell->active_fe_index());
-                for (unsigned int i = 0; i < face_dofs.size(); ++i)
-                  {
-                    const unsigned int c =
-                      fe.face_system_to_component_index(i, f).first % dim;
-                    const auto dof = face_dofs[i];
-                    if (!bc.components[c] ||
-                        increment_constraints.is_constrained(dof) ||
-                        hanging_constraints.is_constrained(dof))
-                      continue;
-                    increment_constraints.add_line(dof);
-                    if (locally_owned_dofs.is_element(dof))
-                      kinematic_dofs.push_back(
-                        {dof, c, support_points[dof], bc.velocity.get()});
-                  }
-              }
+              return true;
+          return false;
+        },
+        [&](const auto                                 &cell,
+            const std::vector<types::global_dof_index> &dofs,
+            const std::vector<Point<dim>>              &points) {
+          const auto &fe = cell->get_fe();
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == bc.id)
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                {
+                  if (!fe.has_support_on_face(i, f))
+                    continue;
+                  const unsigned int c =
+                    fe.system_to_component_index(i).first % dim;
+                  const auto dof = dofs[i];
+                  if (!bc.components[c] ||
+                      increment_constraints.is_constrained(dof) ||
+                      hanging_constraints.is_constrained(dof))
+                    continue;
+                  increment_constraints.add_line(dof);
+                  if (locally_owned_dofs.is_element(dof))
+                    kinematic_dofs.push_back(
+                      {dof, c, points[i], bc.velocity.get()});
+                }
+        });
     increment_constraints.merge(
       hanging_constraints,
       AffineConstraints<double>::MergeConflictBehavior::left_object_wins);
@@ -648,7 +655,11 @@ namespace rupture
       pcout << "   Fault: " << fault->n_split_nodes() << " split node pairs, "
             << fault->n_welded_nodes() << " welded interface nodes\n";
     receivers->setup(dof_handler, locally_owned_dofs);
-    null_space = rigid_body_modes();
+    // The rigid-body modes are the near null space of the algebraic
+    // multigrid: only runs with a system matrix need them.
+    null_space.clear();
+    if (needs_system_matrix)
+      null_space = rigid_body_modes();
     if (fault)
       {
         fault_output->setup(*fault, communicator);
@@ -657,57 +668,6 @@ namespace rupture
                                         locally_owned_dofs,
                                         communicator);
       }
-  }
-
-
-
-  template <int dim>
-  std::vector<std::vector<double>>
-  Simulator<dim>::rigid_body_modes() const
-  {
-    std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
-                                           MappingQ1<dim>()),
-                                         dof_handler,
-                                         support_points);
-
-    std::vector<unsigned int> component(locally_owned_dofs.n_elements(), 0);
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (locally_owned_dofs.is_element(dofs[i]))
-              component[locally_owned_dofs.index_within_set(dofs[i])] =
-                cell->get_fe().system_to_component_index(i).first % dim;
-        }
-
-    const unsigned int               n_modes = dim * (dim + 1) / 2;
-    std::vector<std::vector<double>> modes(
-      n_modes, std::vector<double>(locally_owned_dofs.n_elements(), 0.));
-    unsigned int k = 0;
-    for (const auto dof : locally_owned_dofs)
-      {
-        const unsigned int c = component[k];
-        const Point<dim>  &x = support_points[dof];
-        modes[c][k]          = 1;
-        if (dim == 2)
-          modes[2][k] = (c == 0 ? -x[1] : x[0]);
-        else
-          {
-            // Rotations about the z, x and y axes.
-            const double rz[3] = {-x[1], x[0], 0};
-            const double rx[3] = {0, -x[2], x[1]};
-            const double ry[3] = {x[2], 0, -x[0]};
-            modes[3][k]        = rz[c];
-            modes[4][k]        = rx[c];
-            modes[5][k]        = ry[c];
-          }
-        ++k;
-      }
-    return modes;
   }
 
 
@@ -746,6 +706,7 @@ namespace rupture
   {
     wall_time_start = MPI_Wtime();
     initialize_state();
+    record_memory("initial state");
 
     std::vector<std::string> columns = {
       "Time step number",

@@ -31,6 +31,33 @@ namespace rupture
           << " MB on the largest rank, " << peak_sum / 1048576.
           << " MB on all ranks, " << peak_sum / double(n_dofs)
           << " B per DoF\n";
+    if (!memory_by_stage.empty())
+      {
+        // Growth of the resident memory over the set-up stages, then up to
+        // the peak: where the bytes per DoF go.
+        pcout << "   Memory per DoF by stage (resident, all ranks):";
+        double previous = 0;
+        for (const auto &[stage, bytes] : memory_by_stage)
+          {
+            pcout << " " << stage << " +"
+                  << std::max(bytes - previous, 0.) / double(n_dofs) << " B,";
+            previous = bytes;
+          }
+        pcout << " to the peak +"
+              << std::max(peak_sum - previous, 0.) / double(n_dofs) << " B\n";
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::record_memory(const std::string &stage)
+  {
+    dealii::Utilities::System::MemoryStats stats;
+    dealii::Utilities::System::get_memory_stats(stats);
+    memory_by_stage.emplace_back(
+      stage, dealii::Utilities::MPI::sum(1024. * stats.VmRSS, communicator));
   }
 
 

@@ -310,28 +310,21 @@ namespace rupture
     TimerOutput::Scope t(timer, "Initial state");
 
     // Interpolate the initial fields at the support points of the DoFs.
-    std::map<types::global_dof_index, Point<dim>> support_points;
-    DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
-                                           MappingQ1<dim>()),
-                                         dof_handler,
-                                         support_points);
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto &fe = cell->get_fe();
-          dofs.resize(fe.n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (locally_owned_dofs.is_element(dofs[i]))
-              {
-                const unsigned int c =
-                  fe.system_to_component_index(i).first % dim;
-                const Point<dim> &x   = support_points[dofs[i]];
-                displacement(dofs[i]) = initial_displacement->value(x, c);
-                velocity(dofs[i])     = initial_velocity->value(x, c);
-              }
-        }
+    for_each_support_point(
+      [](const auto &cell) { return cell->is_locally_owned(); },
+      [&](const auto                                 &cell,
+          const std::vector<types::global_dof_index> &dofs,
+          const std::vector<Point<dim>>              &points) {
+        const auto &fe = cell->get_fe();
+        for (unsigned int i = 0; i < dofs.size(); ++i)
+          if (locally_owned_dofs.is_element(dofs[i]))
+            {
+              const unsigned int c =
+                fe.system_to_component_index(i).first % dim;
+              displacement(dofs[i]) = initial_displacement->value(points[i], c);
+              velocity(dofs[i])     = initial_velocity->value(points[i], c);
+            }
+      });
     displacement.compress(VectorOperation::insert);
     velocity.compress(VectorOperation::insert);
     distribute_hanging(displacement);

@@ -49,9 +49,30 @@ namespace rupture
       Point<dim> core_lower;
       Point<dim> core_upper;
 
-      /// Cell sizes along direction d of a graded box.
+      /// Tree levels asked for: -1 for 'auto'.
+      int tree_levels;
+
+      /**
+       * Cell sizes along direction d of a graded box, with the largest
+       * outer cells halved until their number is a multiple of
+       * @p multiple.
+       */
       std::vector<double>
-      graded_steps(const unsigned int d) const;
+      graded_steps(const unsigned int d, const unsigned int multiple) const;
+
+      /// The number of refinements between the coarse mesh and the cells.
+      unsigned int
+      n_tree_levels() const;
+
+      /**
+       * The tensor-product mesh with cell sizes @p steps in each direction,
+       * built as blocks of 2^levels cells refined @p levels times.
+       */
+      void
+      build_tensor_mesh(
+        parallel::distributed::Triangulation<dim> &triangulation,
+        const std::vector<std::vector<double>>    &steps,
+        const unsigned int                         levels) const;
     };
   } // namespace Scene
 } // namespace rupture

@@ -84,6 +84,20 @@ namespace rupture
     std::vector<std::vector<double>>
     rigid_body_modes() const;
 
+    /**
+     * Call @p action with the DoF indices of each cell for which @p select
+     * is true and the support points of those DoFs (in the cell's order,
+     * MappingQ1): the positions of the DoFs without a global map of them.
+     */
+    void
+    for_each_support_point(
+      const std::function<
+        bool(const typename DoFHandler<dim>::active_cell_iterator &)> &select,
+      const std::function<
+        void(const typename DoFHandler<dim>::active_cell_iterator &,
+             const std::vector<types::global_dof_index> &,
+             const std::vector<Point<dim>> &)> &action) const;
+
     // --- assembly (assembly.cc) ---
     void
     assemble_physics_matrices();
@@ -246,6 +260,13 @@ namespace rupture
     /// Wall time of the time steps per DoF-step, and the peak memory.
     void
     print_performance_summary() const;
+    /**
+     * Record the resident memory of all ranks now, at the end of set-up
+     * stage @p stage, for the memory breakdown of the performance summary.
+     * Collective.
+     */
+    void
+    record_memory(const std::string &stage);
 
     MPI_Comm            communicator;
     Output::Log         log;
@@ -403,7 +424,9 @@ namespace rupture
     double       wall_time_start;
     /// Wall time spent in the time loops (s), and their number of steps.
     double time_loop_seconds = 0;
-    double next_output_time;
+    /// Resident memory (bytes, all ranks) after each set-up stage.
+    std::vector<std::pair<std::string, double>> memory_by_stage;
+    double                                      next_output_time;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     Output::Statistics                         statistics;
