@@ -98,23 +98,28 @@ namespace rupture
     const hp::QCollection<dim - 1> q_faces(
       QGaussLobatto<dim - 1>(fe_degree + 1));
     const hp::QCollection<dim - 1> q_load_faces(QGauss<dim - 1>(fe_degree + 1));
-    hp::FEValues<dim>              hp_values(fe_collection,
+    const bool                     need_mass =
+      (scheme == Scheme::implicit_newmark && !use_lumped_mass);
+    // With the matrix-free operator, element stiffness matrices are only
+    // computed for a stored mass matrix (the same loop): otherwise the
+    // cells only contribute loads and lumped masses.
+    const bool            need_matrices = !stiffness_matrix_free || need_mass;
+    hp::FEValues<dim>     hp_values(fe_collection,
                                 q_cells,
-                                update_values | update_gradients |
-                                  update_JxW_values);
-    hp::FEValues<dim>              hp_lumped(fe_collection,
+                                update_values | update_JxW_values |
+                                  (need_matrices ? update_gradients :
+                                                       update_default));
+    hp::FEValues<dim>     hp_lumped(fe_collection,
                                 q_lumped,
                                 update_values | update_JxW_values);
-    hp::FEFaceValues<dim>          hp_faces(fe_collection,
+    hp::FEFaceValues<dim> hp_faces(fe_collection,
                                    q_faces,
                                    update_values | update_normal_vectors |
                                      update_JxW_values);
-    hp::FEFaceValues<dim>          hp_load_faces(fe_collection,
+    hp::FEFaceValues<dim> hp_load_faces(fe_collection,
                                         q_load_faces,
                                         update_values | update_JxW_values);
 
-    const bool need_mass =
-      (scheme == Scheme::implicit_newmark && !use_lumped_mass);
     FullMatrix<double>                   k, mass;
     Vector<double>                       lumped, absorbing, load;
     std::vector<types::global_dof_index> dofs;
@@ -135,8 +140,9 @@ namespace rupture
           dofs.resize(n);
           cell->get_dof_indices(dofs);
 
-          local_elasticity_matrices(
-            fe_values, u, m, k, need_mass ? &mass : nullptr);
+          if (need_matrices)
+            local_elasticity_matrices(
+              fe_values, u, m, k, need_mass ? &mass : nullptr);
           if (!stiffness_matrix_free)
             hanging_constraints.distribute_local_to_global(k,
                                                            dofs,
@@ -441,16 +447,30 @@ namespace rupture
             for (unsigned int i = 0; i < n; ++i)
               mass[i] +=
                 m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+          // M^-1/2 K M^-1/2 is symmetric: only its eigenvalues above the
+          // largest found so far matter, up to Gershgorin's bound.
           LAPACKFullMatrix<double> a(n, n);
+          double                   gershgorin = 0;
           for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
-          a.compute_eigenvalues();
-          double cell_max = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            cell_max = std::max(cell_max, a.eigenvalue(i).real());
-          seen.emplace(key, cell_max);
-          omega2_max = std::max(omega2_max, cell_max);
+            {
+              double row = 0;
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
+                  row += std::abs(a(i, j));
+                }
+              gershgorin = std::max(gershgorin, row);
+            }
+          a.set_property(LAPACKSupport::symmetric);
+          Vector<double>     eigenvalues;
+          FullMatrix<double> eigenvectors;
+          if (gershgorin > omega2_max)
+            a.compute_eigenvalues_symmetric(
+              omega2_max, 1.01 * gershgorin, 0, eigenvalues, eigenvectors);
+          for (const double lambda : eigenvalues)
+            omega2_max = std::max(omega2_max, lambda);
+          // The shape's largest eigenvalue is at most this.
+          seen.emplace(key, omega2_max);
         }
     omega2_max = dealii::Utilities::MPI::max(omega2_max, communicator);
     return std::sqrt(omega2_max);
