@@ -428,20 +428,23 @@ namespace rupture
             pairs.push_back(pair);
           }
 
-      if (split_node_method)
-        {
-          // The split-node method reads and writes the pairs' DoFs alone.
-          // Their forces go straight to the DoFs, so none may be
-          // constrained (hanging nodes on the fault are not supported).
-          std::vector<types::global_dof_index> indices;
-          bool                                 constrained = false;
-          for (const auto &pair : pairs)
-            for (const auto *side : {&pair.minus, &pair.plus})
-              for (const auto dof : *side)
-                {
-                  indices.push_back(dof);
-                  constrained = constrained || constraints.is_constrained(dof);
-                }
+      {
+        // The split-node method and the matrix-free contact tangent read
+        // and write the pairs' DoFs alone (minus side then plus side, dim
+        // entries each, pair by pair). The split-node forces go straight
+        // to the DoFs, so none may be constrained there (hanging nodes on
+        // the fault are not supported).
+        std::vector<types::global_dof_index> indices;
+        bool                                 constrained = false;
+        for (const auto &pair : pairs)
+          for (const auto *side : {&pair.minus, &pair.plus})
+            for (const auto dof : *side)
+              {
+                indices.push_back(dof);
+                constrained = constrained || constraints.is_constrained(dof);
+              }
+        pair_dofs.reinit(locally_owned_dofs, indices, communicator);
+        if (split_node_method)
           AssertThrow(dealii::Utilities::MPI::max(constrained ? 1 : 0,
                                                   communicator) == 0,
                       ExcMessage("The fault's split nodes lie on hanging "
@@ -449,8 +452,7 @@ namespace rupture
                                  "needs the same refinement on both sides "
                                  "of the fault and along it. Refine the "
                                  "mesh globally."));
-          pair_dofs.reinit(locally_owned_dofs, indices, communicator);
-        }
+      }
 
       unsigned int n_welded_owned = 0;
       for (const auto &[key, pair] : welded_nodes)
@@ -948,46 +950,122 @@ namespace rupture
 
     template <int dim>
     unsigned int
-    Fault<dim>::n_steeper_than_body(
-      const TrilinosWrappers::SparseMatrix &effective_stiffness) const
+    Fault<dim>::n_steeper_than_body(const VectorType &effective_diagonal) const
     {
-      const IndexSet owned = effective_stiffness.locally_owned_range_indices();
-      unsigned int   n     = 0;
-      for (const auto &pair : pairs)
+      std::vector<double> &diagonal = pair_values[0];
+      pair_dofs.gather(effective_diagonal.trilinos_vector()[0], diagonal);
+      unsigned int n = 0;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
         {
-          const ContactResponse<dim> &r = pair.trial;
+          const NodePair             &pair = pairs[k];
+          const ContactResponse<dim> &r    = pair.trial;
           if (pair.forced || r.status != ContactStatus::slip ||
               r.friction_derivative >= 0)
             continue;
           const double   tn  = r.traction * pair.normal;
-          const double   k   = -r.friction_derivative * std::max(-tn, 0.);
+          const double   k_w = -r.friction_derivative * std::max(-tn, 0.);
           const double   p_t = pair.tangential_penalty;
           Tensor<1, dim> e   = r.traction - tn * pair.normal;
-          if (e.norm() == 0 || k == 0)
+          if (e.norm() == 0 || k_w == 0)
             continue;
           e /= e.norm();
           // Where the weakening is steeper than the penalty the node's
           // traction snaps to its residual strength instead (counted by
           // Statistics::unstable_softening).
-          if (k >= p_t)
+          if (k_w >= p_t)
             continue;
-          const double softening = k * p_t / (p_t - k) * pair.area;
-          // The stiffness of each side along e; a side whose rows live on
-          // another rank counts as the other.
-          const auto side = [&](const auto &dofs) {
+          const double softening = k_w * p_t / (p_t - k_w) * pair.area;
+          // The stiffness of each side along e.
+          const auto side = [&](const unsigned int first) {
             double d = 0;
             for (unsigned int c = 0; c < dim; ++c)
-              d += e[c] * e[c] * effective_stiffness.diag_element(dofs[c]);
+              d += e[c] * e[c] * diagonal[first + c];
             return d;
           };
-          const double minus = side(pair.minus);
-          const double plus =
-            owned.is_element(pair.plus[0]) ? side(pair.plus) : minus;
+          const double minus = side(2 * dim * k),
+                       plus  = side(2 * dim * k + dim);
           if (minus > 0 && plus > 0 &&
               softening > minus * plus / (minus + plus))
             ++n;
         }
       return dealii::Utilities::MPI::sum(n, communicator);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::apply_tangent(const VectorType &x, VectorType &y) const
+    {
+      std::vector<double> &values = pair_values[0];
+      pair_dofs.gather(x.trilinos_vector()[0], values);
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const NodePair    &pair = pairs[k];
+          const unsigned int m0 = 2 * dim * k, p0 = m0 + dim;
+          // The block [D, -D; -D, D] times (x-, x+): -D j and D j, with the
+          // jump j = x+ - x-.
+          Tensor<1, dim> jump;
+          for (unsigned int d = 0; d < dim; ++d)
+            jump[d] = values[p0 + d] - values[m0 + d];
+          const Tensor<1, dim> f = pair.area * (pair.trial.tangent * jump);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              values[m0 + d] = -f[d];
+              values[p0 + d] = f[d];
+            }
+        }
+      pair_dofs.scatter_add(values, y.trilinos_vector()[0]);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::precondition_pairs(const VectorType &r,
+                                   const VectorType &diagonal,
+                                   const VectorType &free,
+                                   VectorType       &z) const
+    {
+      const VectorType *const fields[4] = {&r, &diagonal, &free, &z};
+      for (unsigned int f = 0; f < 4; ++f)
+        pair_dofs.gather(fields[f]->trilinos_vector()[0], pair_values[f]);
+      const std::vector<double> &rs = pair_values[0], &ds = pair_values[1],
+                                &fs = pair_values[2];
+      std::vector<double>   &zs     = pair_values[3];
+      constexpr unsigned int n      = 2 * dim;
+      FullMatrix<double>     block(n, n), inverse(n, n);
+      Vector<double>         rhs(n), solution(n);
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const NodePair    &pair  = pairs[k];
+          const unsigned int first = n * k;
+          block                    = 0;
+          for (unsigned int i = 0; i < dim; ++i)
+            for (unsigned int j = 0; j < dim; ++j)
+              {
+                const double d = pair.area * pair.trial.tangent[i][j];
+                block(i, j) += d;
+                block(i, dim + j) -= d;
+                block(dim + i, j) -= d;
+                block(dim + i, dim + j) += d;
+              }
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              rhs(i) = rs[first + i];
+              if (fs[first + i] == 0)
+                for (unsigned int j = 0; j < n; ++j)
+                  block(i, j) = block(j, i) = 0;
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            block(i, i) += (fs[first + i] == 0 ? 1 : ds[first + i]);
+          inverse.invert(block);
+          inverse.vmult(solution, rhs);
+          // z holds r / diag at these entries: add the difference.
+          for (unsigned int i = 0; i < n; ++i)
+            zs[first + i] = solution(i) - zs[first + i];
+        }
+      pair_dofs.scatter_add(zs, z.trilinos_vector()[0]);
     }
 
 

@@ -18,6 +18,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
+
+#include <functional>
 #ifdef RUPTURE_SIMD_INSTANTIATE
 #  include <deal.II/matrix_free/dof_info.templates.h>
 #  include <deal.II/matrix_free/evaluation_template_factory.templates.h>
@@ -51,8 +53,51 @@ namespace rupture
 
       MF           matrix_free;
       unsigned int fe_degree = 1;
-      /// Lame constants of each cell batch (one lane a cell).
-      AlignedVector<Number> lambda, mu;
+      /// Lame constants and density of each cell batch (one lane a cell).
+      AlignedVector<Number> lambda, mu, density;
+      /// The factors of K and M in the product of the next cell loop.
+      mutable double stiffness_factor = 1, mass_factor = 0;
+
+      /**
+       * The quadrature-point operation of stiffness_factor K +
+       * mass_factor M on the values (if @p with_mass) and gradients held
+       * by @p phi.
+       */
+      template <class Evaluation>
+      void
+      quadrature_operation(Evaluation        &phi,
+                           const unsigned int cell,
+                           const double       k_factor,
+                           const double       m_factor) const
+      {
+        const Number l = k_factor * lambda[cell];
+        const Number m = k_factor * mu[cell];
+        const Number r = m_factor * density[cell];
+        for (const unsigned int q : phi.quadrature_point_indices())
+          {
+            if (k_factor != 0)
+              {
+                SymmetricTensor<2, dim, Number> eps =
+                  phi.get_symmetric_gradient(q);
+                const Number trace = trace_of(eps);
+                eps *= 2. * m;
+                for (unsigned int d = 0; d < dim; ++d)
+                  eps[d][d] += l * trace;
+                phi.submit_symmetric_gradient(eps, q);
+              }
+            if (m_factor != 0)
+              phi.submit_value(r * phi.get_value(q), q);
+          }
+      }
+
+      static EvaluationFlags::EvaluationFlags
+      flags(const double k_factor, const double m_factor)
+      {
+        return (k_factor != 0 ? EvaluationFlags::gradients :
+                                EvaluationFlags::nothing) |
+               (m_factor != 0 ? EvaluationFlags::values :
+                                EvaluationFlags::nothing);
+      }
 
       /**
        * K src on the cells of @p range: all of one active FE index, that
@@ -70,25 +115,62 @@ namespace rupture
         constexpr int      n_q  = (degree < 0 ? 0 : degree + 1);
         FEEvaluation<dim, degree, n_q, dim, double, Number> phi(
           data, range, 0, 0, side * dim);
+        const auto evaluation_flags = flags(stiffness_factor, mass_factor);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
           {
             phi.reinit(cell);
             phi.read_dof_values(src);
-            phi.evaluate(EvaluationFlags::gradients);
-            const Number l = lambda[cell];
-            const Number m = mu[cell];
-            for (const unsigned int q : phi.quadrature_point_indices())
-              {
-                SymmetricTensor<2, dim, Number> eps =
-                  phi.get_symmetric_gradient(q);
-                const Number trace = trace_of(eps);
-                eps *= 2. * m;
-                for (unsigned int d = 0; d < dim; ++d)
-                  eps[d][d] += l * trace;
-                phi.submit_symmetric_gradient(eps, q);
-              }
-            phi.integrate(EvaluationFlags::gradients);
+            phi.evaluate(evaluation_flags);
+            quadrature_operation(phi, cell, stiffness_factor, mass_factor);
+            phi.integrate(evaluation_flags);
             phi.distribute_local_to_global(dst);
+          }
+      }
+
+      /**
+       * The cells' diagonal entries of K (into @p dst) and of M (into
+       * @p mass_diagonal): the operator applied to each unit vector of the
+       * cell in turn.
+       */
+      template <int degree>
+      void
+      local_diagonals(const MF   &data,
+                      VectorType &dst,
+                      VectorType &mass_diagonal,
+                      const std::pair<unsigned int, unsigned int> &range) const
+      {
+        const unsigned int side = data.get_cell_active_fe_index(range);
+        constexpr int      n_q  = (degree < 0 ? 0 : degree + 1);
+        FEEvaluation<dim, degree, n_q, dim, double, Number> phi(
+          data, range, 0, 0, side * dim);
+        const unsigned int    n = phi.dofs_per_cell;
+        AlignedVector<Number> k_diagonal(n), m_diagonal(n);
+        for (unsigned int cell = range.first; cell < range.second; ++cell)
+          {
+            phi.reinit(cell);
+            for (unsigned int pass = 0; pass < 2; ++pass)
+              {
+                const double           k_factor = (pass == 0 ? 1 : 0);
+                const double           m_factor = 1 - k_factor;
+                const auto             f        = flags(k_factor, m_factor);
+                AlignedVector<Number> &diagonal =
+                  (pass == 0 ? k_diagonal : m_diagonal);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    for (unsigned int j = 0; j < n; ++j)
+                      phi.begin_dof_values()[j] = Number(i == j ? 1. : 0.);
+                    phi.evaluate(f);
+                    quadrature_operation(phi, cell, k_factor, m_factor);
+                    phi.integrate(f);
+                    diagonal[i] = phi.begin_dof_values()[i];
+                  }
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              phi.begin_dof_values()[i] = k_diagonal[i];
+            phi.distribute_local_to_global(dst);
+            for (unsigned int i = 0; i < n; ++i)
+              phi.begin_dof_values()[i] = m_diagonal[i];
+            phi.distribute_local_to_global(mass_diagonal);
           }
       }
 
@@ -136,6 +218,7 @@ namespace rupture
       const unsigned int n_batches = impl->matrix_free.n_cell_batches();
       impl->lambda.resize(n_batches);
       impl->mu.resize(n_batches);
+      impl->density.resize(n_batches);
       for (unsigned int b = 0; b < n_batches; ++b)
         for (unsigned int v = 0;
              v < impl->matrix_free.n_active_entries_per_cell_batch(b);
@@ -143,8 +226,9 @@ namespace rupture
           {
             const auto &m = materials.get(
               impl->matrix_free.get_cell_iterator(b, v)->material_id());
-            impl->lambda[b][v] = m.lambda;
-            impl->mu[b][v]     = m.mu;
+            impl->lambda[b][v]  = m.lambda;
+            impl->mu[b][v]      = m.mu;
+            impl->density[b][v] = m.density;
           }
     }
 
@@ -163,7 +247,21 @@ namespace rupture
     void
     ElasticOperator<dim>::vmult(VectorType &dst, const VectorType &src) const
     {
+      vmult(dst, src, 1., 0.);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::vmult(VectorType       &dst,
+                                const VectorType &src,
+                                const double      stiffness_factor,
+                                const double      mass_factor) const
+    {
       const Implementation &i = *impl;
+      i.stiffness_factor      = stiffness_factor;
+      i.mass_factor           = mass_factor;
       switch (i.fe_degree)
         {
           case 1:
@@ -178,6 +276,43 @@ namespace rupture
             i.matrix_free.cell_loop(
               &Implementation::template local_apply<-1>, &i, dst, src, true);
         }
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::compute_diagonals(VectorType &stiffness_diagonal,
+                                            VectorType &mass_diagonal) const
+    {
+      const Implementation &i = *impl;
+      initialize_dof_vector(stiffness_diagonal);
+      initialize_dof_vector(mass_diagonal);
+      using Range = std::pair<unsigned int, unsigned int>;
+      const std::function<void(const typename Implementation::MF &,
+                               VectorType &,
+                               const VectorType &,
+                               const Range &)>
+        local = [&](const typename Implementation::MF &data,
+                    VectorType                        &dst,
+                    const VectorType &,
+                    const Range &range) {
+          switch (i.fe_degree)
+            {
+              case 1:
+                i.template local_diagonals<1>(data, dst, mass_diagonal, range);
+                break;
+              case 2:
+                i.template local_diagonals<2>(data, dst, mass_diagonal, range);
+                break;
+              default:
+                i.template local_diagonals<-1>(data, dst, mass_diagonal, range);
+            }
+        };
+      VectorType unused; // (the loop's source vector, not read)
+      initialize_dof_vector(unused);
+      i.matrix_free.cell_loop(local, stiffness_diagonal, unused, true);
+      mass_diagonal.compress(VectorOperation::add);
     }
 
 

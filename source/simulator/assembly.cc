@@ -98,8 +98,10 @@ namespace rupture
     const hp::QCollection<dim - 1> q_faces(
       QGaussLobatto<dim - 1>(fe_degree + 1));
     const hp::QCollection<dim - 1> q_load_faces(QGauss<dim - 1>(fe_degree + 1));
-    const bool                     need_mass =
-      (scheme == Scheme::implicit_newmark && !use_lumped_mass);
+    // (The matrix-free solver applies the consistent mass through the
+    // elastic operator.)
+    const bool need_mass = (scheme == Scheme::implicit_newmark &&
+                            !use_lumped_mass && !linear_solver.matrix_free());
     // With the matrix-free operator, element stiffness matrices are only
     // computed for a stored mass matrix (the same loop): otherwise the
     // cells only contribute loads and lumped masses.
@@ -314,6 +316,21 @@ namespace rupture
                                          const double mass_factor,
                                          const double absorbing_factor)
   {
+    system_factors = {stiffness_factor, mass_factor, absorbing_factor};
+    if (linear_solver.matrix_free())
+      {
+        // Only the diagonal, for the block-Jacobi preconditioner.
+        TimerOutput::Scope t(timer, "System diagonal");
+        system_diagonal = stiffness_diagonal;
+        system_diagonal *= stiffness_factor;
+        if (mass_factor != 0)
+          system_diagonal.add(mass_factor,
+                              use_lumped_mass ? lumped_mass :
+                                                consistent_mass_diagonal);
+        if (absorbing_factor != 0 && has_absorbing)
+          system_diagonal.add(absorbing_factor, absorbing_damping);
+        return;
+      }
     TimerOutput::Scope t(timer, "Assemble system matrix");
     system_matrix        = 0;
     const bool with_mass = (mass_factor != 0 && !use_lumped_mass);
@@ -544,15 +561,88 @@ namespace rupture
         return;
       }
     TimerOutput::Scope t(timer, "Stiffness product matrix-free");
+    apply_elastic(x, y, 1, 0);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_elastic(const VectorType &x,
+                                VectorType       &y,
+                                const double      stiffness_factor,
+                                const double      mass_factor) const
+  {
     // Both vectors number their owned entries in increasing global order,
     // so the owned parts copy one to one.
     const unsigned int n_owned = operator_src.locally_owned_size();
     AssertDimension(static_cast<unsigned int>(x.locally_owned_size()), n_owned);
     const double *xs = x.trilinos_vector()[0];
     std::copy(xs, xs + n_owned, operator_src.begin());
-    elastic_operator->vmult(operator_dst, operator_src);
+    elastic_operator->vmult(operator_dst,
+                            operator_src,
+                            stiffness_factor,
+                            mass_factor);
     double *ys = y.trilinos_vector()[0];
     std::copy(operator_dst.begin(), operator_dst.begin() + n_owned, ys);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::apply_system(const VectorType &x, VectorType &y) const
+  {
+    TimerOutput::Scope   t(timer, "System product matrix-free");
+    const SystemFactors &c = system_factors;
+    const unsigned int   n = x.locally_owned_size();
+    if (system_work.size() != x.size())
+      system_work.reinit(x);
+    system_work      = x;
+    double       *xs = system_work.trilinos_vector()[0];
+    const double *fr = free_dofs.trilinos_vector()[0];
+    for (unsigned int i = 0; i < n; ++i)
+      xs[i] *= fr[i];
+    const bool consistent = (c.mass != 0 && !use_lumped_mass);
+    apply_elastic(system_work, y, c.stiffness, consistent ? c.mass : 0.);
+    double *ys = y.trilinos_vector()[0];
+    if (c.mass != 0 && use_lumped_mass)
+      {
+        const double *m = lumped_mass.trilinos_vector()[0];
+        for (unsigned int i = 0; i < n; ++i)
+          ys[i] += c.mass * m[i] * xs[i];
+      }
+    if (c.absorbing != 0 && has_absorbing)
+      {
+        const double *a = absorbing_damping.trilinos_vector()[0];
+        for (unsigned int i = 0; i < n; ++i)
+          ys[i] += c.absorbing * a[i] * xs[i];
+      }
+    if (fault)
+      fault->apply_tangent(system_work, y);
+    // The identity on constrained rows.
+    const double *x0 = x.trilinos_vector()[0];
+    for (unsigned int i = 0; i < n; ++i)
+      if (fr[i] == 0)
+        ys[i] = x0[i];
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::precondition_system(const VectorType &r, VectorType &z) const
+  {
+    TimerOutput::Scope t(timer, "Block Jacobi");
+    const unsigned int n  = r.locally_owned_size();
+    const double      *rs = r.trilinos_vector()[0];
+    const double      *ds = system_diagonal.trilinos_vector()[0];
+    const double      *fr = free_dofs.trilinos_vector()[0];
+    double            *zs = z.trilinos_vector()[0];
+    for (unsigned int i = 0; i < n; ++i)
+      zs[i] = (fr[i] != 0 && ds[i] > 0) ? rs[i] / ds[i] : rs[i];
+    if (fault)
+      fault->precondition_pairs(r, system_diagonal, free_dofs, z);
   }
 
 

@@ -582,11 +582,20 @@ namespace rupture
 
     using Scheme        = TimeIntegration::Scheme;
     const Scheme scheme = time_parameters.scheme;
-    const bool   needs_system_matrix =
+    // The matrix-free solver applies the system and the consistent mass
+    // through the elastic operator instead.
+    const bool matrix_free_system = linear_solver.matrix_free();
+    AssertThrow(!matrix_free_system || stiffness_matrix_free,
+                ExcMessage("<Solver/Preconditioner> = block Jacobi stores no "
+                           "matrix and needs <Discretization/Stiffness "
+                           "operator> = matrix free."));
+    const bool needs_system_matrix =
       (scheme != Scheme::explicit_central_difference ||
-       time_parameters.loading_phase);
+       time_parameters.loading_phase) &&
+      !matrix_free_system;
     const bool needs_mass_matrix =
-      (scheme == Scheme::implicit_newmark && !use_lumped_mass);
+      (scheme == Scheme::implicit_newmark && !use_lumped_mass) &&
+      !matrix_free_system;
 
     // The sparsity pattern, only if some matrix is stored (an explicit run
     // with the matrix-free operator stores none).
@@ -649,6 +658,28 @@ namespace rupture
       lumped_mass.reinit(locally_owned_dofs, communicator);
     if (has_absorbing)
       absorbing_damping.reinit(locally_owned_dofs, communicator);
+    for (VectorType *v : {&stiffness_diagonal,
+                          &consistent_mass_diagonal,
+                          &system_diagonal,
+                          &free_dofs,
+                          &system_work})
+      v->clear();
+    if (matrix_free_system && (scheme != Scheme::explicit_central_difference ||
+                               time_parameters.loading_phase))
+      {
+        TimerOutput::Scope                         t(timer, "System diagonal");
+        LinearAlgebra::distributed::Vector<double> k, m;
+        elastic_operator->compute_diagonals(k, m);
+        for (VectorType *v :
+             {&stiffness_diagonal, &consistent_mass_diagonal, &free_dofs})
+          v->reinit(locally_owned_dofs, communicator);
+        const unsigned int n = k.locally_owned_size();
+        std::copy(k.begin(), k.begin() + n, stiffness_diagonal.begin());
+        std::copy(m.begin(), m.begin() + n, consistent_mass_diagonal.begin());
+        for (const auto i : locally_owned_dofs)
+          free_dofs(i) = increment_constraints.is_constrained(i) ? 0. : 1.;
+        free_dofs.compress(VectorOperation::insert);
+      }
 
     pcout << "   Degrees of freedom: " << dof_handler.n_dofs() << "\n";
     if (fault)

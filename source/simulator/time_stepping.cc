@@ -23,15 +23,17 @@ namespace rupture
      */
     struct ConstrainedMass
     {
-      const TrilinosWrappers::SparseMatrix &mass;
-      const AffineConstraints<double>      &constraints;
-      const IndexSet                       &owned;
+      const std::function<void(const TrilinosWrappers::MPI::Vector &,
+                               TrilinosWrappers::MPI::Vector &)>
+                                       mass;
+      const AffineConstraints<double> &constraints;
+      const IndexSet                  &owned;
 
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
-        mass.vmult(dst, src);
+        mass(src, dst);
         for (const auto i : owned)
           if (constraints.is_constrained(i))
             dst(i) = src(i);
@@ -87,6 +89,8 @@ namespace rupture
         y = x;
         y.scale(lumped_mass);
       }
+    else if (mass_matrix.m() == 0)
+      apply_elastic(x, y, 0, 1);
     else
       mass_matrix.vmult(y, x);
   }
@@ -283,13 +287,20 @@ namespace rupture
       }
     else if (r.l2_norm() > 0)
       {
-        ConstrainedMass        op{mass_matrix,
+        ConstrainedMass        op{[this](const VectorType &x, VectorType &y) {
+                             apply_mass(x, y);
+                           },
                            increment_constraints,
                            locally_owned_dofs};
         DiagonalPreconditioner jacobi;
         jacobi.inverse.reinit(locally_owned_dofs, communicator);
         for (const auto i : locally_owned_dofs)
-          jacobi.inverse(i) = 1. / mass_matrix.diag_element(i);
+          {
+            const double d    = (mass_matrix.m() == 0) ?
+                                  consistent_mass_diagonal(i) :
+                                  mass_matrix.diag_element(i);
+            jacobi.inverse(i) = d > 0 ? 1. / d : 1.;
+          }
         jacobi.inverse.compress(VectorOperation::insert);
         SolverControl        control(1000, 1e-14 * r.l2_norm());
         SolverCG<VectorType> cg(control);
@@ -607,10 +618,18 @@ namespace rupture
                           << newton_displacement_tolerance << ")";
                 message << "; " << f.n_slipping << " slipping and " << f.n_open
                         << " open fault nodes. ";
-                // The matrix holds the effective stiffness without the
-                // contact here (it is added for each solve only).
+                // The effective stiffness without the contact (the matrix
+                // has it added for each solve only).
+                VectorType diagonal(system_diagonal);
+                if (!linear_solver.matrix_free())
+                  {
+                    diagonal.reinit(locally_owned_dofs, communicator);
+                    for (const auto i : locally_owned_dofs)
+                      diagonal(i) = system_matrix.diag_element(i);
+                    diagonal.compress(VectorOperation::insert);
+                  }
                 const unsigned int n_steep =
-                  fault->n_steeper_than_body(system_matrix);
+                  fault->n_steeper_than_body(diagonal);
                 std::string reason =
                   stalled ? "the residual stalled" : "too many iterations";
                 if (f.unstable_softening)
@@ -644,7 +663,7 @@ namespace rupture
             last_signature = signature;
           }
 
-        if (fault)
+        if (fault && !linear_solver.matrix_free())
           {
             // Effective stiffness plus the contact tangent (nonsymmetric
             // where nodes slip), for this iteration only.
@@ -669,11 +688,24 @@ namespace rupture
         increment = 0;
         {
           TimerOutput::Scope t(timer, "Linear solve");
-          linear_iterations =
-            linear_solver.solve(system_matrix, increment, free_residual);
+          if (linear_solver.matrix_free())
+            // The contact tangent is that of the pairs' trial states, from
+            // the last residual.
+            linear_iterations =
+              linear_solver.solve([this](const VectorType &x,
+                                         VectorType &y) { apply_system(x, y); },
+                                  [this](const VectorType &r, VectorType &z) {
+                                    precondition_system(r, z);
+                                  },
+                                  !fault || fault->all_stuck(),
+                                  increment,
+                                  free_residual);
+          else
+            linear_iterations =
+              linear_solver.solve(system_matrix, increment, free_residual);
           last_linear_iterations += linear_iterations;
         }
-        if (fault)
+        if (fault && !linear_solver.matrix_free())
           {
             scratch = 0;
             assemble_contact(scratch, true, -1);

@@ -269,14 +269,39 @@ namespace rupture
        * (-mu' |T_n| p_t / (p_t + mu' |T_n|) times the node's area, the slip
        * direction's part of the contact tangent) larger than the stiffness
        * that holds the node along its slip direction: the two sides'
-       * diagonal entries of @p effective_stiffness (stiffness plus the
-       * Newmark mass and damping terms, without the contact) in series.
+       * entries of @p effective_diagonal (the diagonal of the stiffness
+       * plus the Newmark mass and damping terms, without the contact; an
+       * owned vector) in series. Collective.
        * There the global tangent is indefinite, which makes Newton's method
        * fail; a shorter time step stiffens the inertia term as 1/dt^2.
        */
       unsigned int
-      n_steeper_than_body(
-        const TrilinosWrappers::SparseMatrix &effective_stiffness) const;
+      n_steeper_than_body(const VectorType &effective_diagonal) const;
+
+      /**
+       * y += T x for the contact tangent T of the last assemble() (the
+       * pairs' blocks, as assemble() adds them to a matrix), for Krylov
+       * solvers that store no matrix. @p x and @p y are owned vectors; the
+       * pairs' entries are exchanged alone, no compress() is needed. x must
+       * be zero at constrained DoFs. Collective.
+       */
+      void
+      apply_tangent(const VectorType &x, VectorType &y) const;
+
+      /**
+       * The fault part of a block-Jacobi preconditioner of the effective
+       * stiffness A + T: @p z holds the point-Jacobi solution r / diag(A)
+       * (and r at constrained DoFs); at each pair's 2 dim DoFs it is
+       * replaced by the solution of the pair's block diag(A) + T_pair,
+       * which the stiff penalty dominates, exactly. @p free is 1 at free
+       * DoFs and 0 at constrained ones, whose rows and columns are the
+       * identity. All owned vectors. Collective.
+       */
+      void
+      precondition_pairs(const VectorType &r,
+                         const VectorType &diagonal,
+                         const VectorType &free,
+                         VectorType       &z) const;
 
       /**
        * True if no pair slipped in the last assemble().

@@ -66,6 +66,29 @@ namespace rupture
       void
       vmult(VectorType &dst, const VectorType &src) const;
 
+      /**
+       * dst = stiffness_factor K src + mass_factor M src in one pass over
+       * the cells, M the consistent mass matrix (Gauss quadrature, the
+       * density of each cell's material): the effective stiffness of an
+       * implicit Newmark step without a stored matrix.
+       */
+      void
+      vmult(VectorType       &dst,
+            const VectorType &src,
+            const double      stiffness_factor,
+            const double      mass_factor) const;
+
+      /**
+       * The diagonals of K and of the consistent M, for Jacobi-type
+       * preconditioners. The cells' diagonal entries are added up through
+       * the constraints, which is exact for unconstrained DoFs and for the
+       * welded fault nodes (whose two sides never share a cell) and an
+       * approximation for the parents of hanging nodes.
+       */
+      void
+      compute_diagonals(VectorType &stiffness_diagonal,
+                        VectorType &mass_diagonal) const;
+
       /// Number of cells and DoFs, for the screen.
       unsigned long
       n_dofs() const;

@@ -121,10 +121,38 @@ namespace rupture
      */
     bool
     run_phase(const double end_time, const bool stop_when_weakening);
+    /**
+     * Set the effective stiffness stiffness_factor K + mass_factor M +
+     * absorbing_factor C_absorbing of the coming steps (Rayleigh damping
+     * folded into the first two factors): assemble it and build its
+     * preconditioner, or, with the matrix-free solver, only its diagonal.
+     */
     void
     assemble_system_matrix(const double stiffness_factor,
                            const double mass_factor,
                            const double absorbing_factor);
+    /**
+     * y = A x for the effective stiffness A of assemble_system_matrix()
+     * plus the fault's contact tangent of its last assemble(), matrix-free,
+     * with the identity in the rows of DoFs that increment_constraints
+     * constrains (x is read as zero there otherwise).
+     */
+    void
+    apply_system(const VectorType &x, VectorType &y) const;
+    /**
+     * z = P^-1 r for the block-Jacobi preconditioner of apply_system().
+     */
+    void
+    precondition_system(const VectorType &r, VectorType &z) const;
+    /**
+     * y = stiffness_factor K x + mass_factor M x with the matrix-free
+     * operator (M the consistent mass).
+     */
+    void
+    apply_elastic(const VectorType &x,
+                  VectorType       &y,
+                  const double      stiffness_factor,
+                  const double      mass_factor) const;
     void
     assemble_load_vector(const double time, VectorType &load) const;
     double
@@ -340,6 +368,19 @@ namespace rupture
     VectorType                       lumped_mass;
     VectorType                       absorbing_damping;
     VectorType                       explicit_inverse_diagonal;
+    /// The factors of the effective stiffness of assemble_system_matrix().
+    struct SystemFactors
+    {
+      double stiffness = 1, mass = 0, absorbing = 0;
+    } system_factors;
+    /// Without a stored system matrix (Solver::LinearSolver::matrix_free()):
+    /// the diagonals of K and of the consistent M, that of the effective
+    /// stiffness, and 1 at free DoFs, 0 at those increment_constraints
+    /// constrains.
+    VectorType stiffness_diagonal, consistent_mass_diagonal, system_diagonal,
+      free_dofs;
+    /// Work vector of apply_system().
+    mutable VectorType system_work;
     /// Work vectors of the explicit step, kept between steps: the
     /// displacement at the start of the step, K u, the residual and the
     /// fault's forces. And the load of the step if it varies.

@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -62,6 +63,37 @@ namespace rupture
       solve(const TrilinosWrappers::SparseMatrix &matrix,
             TrilinosWrappers::MPI::Vector        &x,
             const TrilinosWrappers::MPI::Vector  &b);
+
+      /// y = A x for an operator that is given by its action.
+      using Operator =
+        std::function<void(const TrilinosWrappers::MPI::Vector &x,
+                           TrilinosWrappers::MPI::Vector       &y)>;
+
+      /**
+       * Whether no system matrix is stored: <Solver/Preconditioner> =
+       * block Jacobi with a Krylov method. Then solve() below is used with
+       * the system's matrix-free product and its block-Jacobi
+       * preconditioner, and initialize() is never called.
+       */
+      bool
+      matrix_free() const
+      {
+        return block_jacobi;
+      }
+
+      /**
+       * Solve A x = b with CG (if @p symmetric under 'automatic') or
+       * right-preconditioned GMRES for the operator @p system, preconditioned
+       * by @p preconditioner (z = P^-1 r), to the relative tolerance;
+       * returns the number of iterations. Throws with a diagnosis if the
+       * solver fails.
+       */
+      unsigned int
+      solve(const Operator                      &system,
+            const Operator                      &preconditioner,
+            const bool                           symmetric,
+            TrilinosWrappers::MPI::Vector       &x,
+            const TrilinosWrappers::MPI::Vector &b);
 
       /// Numeric factorisations done by the direct solvers so far.
       unsigned int
@@ -138,6 +170,7 @@ namespace rupture
       double       relative_tolerance;
       unsigned int max_iterations;
       bool         use_cg             = true;
+      bool         block_jacobi       = false;
       bool         use_pair_transform = true;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
       /// T (see set_fault_pairs()), or null without a penalty fault.
