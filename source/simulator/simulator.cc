@@ -259,6 +259,19 @@ namespace rupture
         "implicit dynamic steps that can still be cut (not in quasi-static "
         "steps, nor after <Maximum step cuts> cuts). 0 never gives up "
         "early.");
+      prm.declare_entry(
+        "Newton forcing",
+        "0.1",
+        Patterns::Double(0, 0.9),
+        "Inexact Newton (matrix-free solves, <Preconditioner> = block "
+        "Jacobi, with a fault): the Krylov solve of a Newton iteration stops "
+        "at the relative residual eta_k = 0.9 (|F_k| / |F_k-1|)^2 "
+        "(Eisenstat and Walker's second choice, with their safeguard), at "
+        "most this value, at least <Linear solver tolerance>, and never "
+        "tighter than what the force tolerance of the step still needs. "
+        "Far from convergence a loose solve is enough; near it the "
+        "forcing falls and Newton converges superlinearly. 0 solves every "
+        "iteration to <Linear solver tolerance>.");
     }
     prm.leave_subsection();
   }
@@ -397,6 +410,7 @@ namespace rupture
     max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
     max_step_cuts           = prm.get_integer("Maximum step cuts");
     newton_stall_iterations = prm.get_integer("Newton stall iterations");
+    newton_forcing          = prm.get_double("Newton forcing");
     print_newton_iterations = prm.get_bool("Print Newton iterations");
     newton_predictor        = prm.get("Newton predictor");
     limit_stick_crossings   = prm.get_bool("Limit stick crossings");

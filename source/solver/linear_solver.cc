@@ -465,7 +465,8 @@ namespace rupture
                         const Operator                      &preconditioner,
                         const bool                           symmetric,
                         TrilinosWrappers::MPI::Vector       &x,
-                        const TrilinosWrappers::MPI::Vector &b)
+                        const TrilinosWrappers::MPI::Vector &b,
+                        const double                         tolerance)
     {
       Assert(block_jacobi,
              ExcMessage("The matrix-free solve needs <Solver/Preconditioner> "
@@ -495,7 +496,10 @@ namespace rupture
       const Wrapper a{system}, p{preconditioner};
       use_cg =
         (solver_type == "CG" || (solver_type == "automatic" && symmetric));
-      SolverControl control(max_iterations, relative_tolerance * b_norm);
+      const double wanted =
+        (tolerance > 0 ? std::max(tolerance, relative_tolerance) :
+                         relative_tolerance);
+      SolverControl control(max_iterations, wanted * b_norm);
       try
         {
           if (use_cg)
@@ -516,20 +520,20 @@ namespace rupture
         }
       catch (const SolverControl::NoConvergence &e)
         {
-          AssertThrow(
-            false,
-            ExcMessage(
-              std::string("The matrix-free ") + (use_cg ? "CG" : "GMRES") +
-              " solve (block Jacobi preconditioner) did not "
-              "converge within " +
-              std::to_string(max_iterations) +
-              " iterations (residual reduced to " +
-              short_number(e.last_residual / b_norm) +
-              " of its start, wanted " + short_number(relative_tolerance) +
-              "). Block Jacobi suits dynamic steps near the "
-              "explicit time step; for quasi-static steps or long "
-              "time steps use <Solver/Preconditioner> = AMG, or "
-              "raise <Solver/Maximum linear iterations>."));
+          AssertThrow(false,
+                      ExcMessage(
+                        std::string("The matrix-free ") +
+                        (use_cg ? "CG" : "GMRES") +
+                        " solve (block Jacobi preconditioner) did not "
+                        "converge within " +
+                        std::to_string(max_iterations) +
+                        " iterations (residual reduced to " +
+                        short_number(e.last_residual / b_norm) +
+                        " of its start, wanted " + short_number(wanted) +
+                        "). Block Jacobi suits dynamic steps near the "
+                        "explicit time step; for quasi-static steps or long "
+                        "time steps use <Solver/Preconditioner> = AMG, or "
+                        "raise <Solver/Maximum linear iterations>."));
         }
       last_residual = control.last_value() / b_norm;
       return control.last_step();

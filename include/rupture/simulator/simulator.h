@@ -447,6 +447,7 @@ namespace rupture
     unsigned int  max_step_cuts;
     unsigned int  n_step_cuts = 0;
     unsigned int  newton_stall_iterations;
+    double        newton_forcing;
     /// Whether a stalled Newton iteration may give up (the step can be cut).
     bool newton_may_cut = false;
     bool print_newton_iterations;

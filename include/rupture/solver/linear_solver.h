@@ -84,16 +84,18 @@ namespace rupture
       /**
        * Solve A x = b with CG (if @p symmetric under 'automatic') or
        * right-preconditioned GMRES for the operator @p system, preconditioned
-       * by @p preconditioner (z = P^-1 r), to the relative tolerance;
-       * returns the number of iterations. Throws with a diagnosis if the
-       * solver fails.
+       * by @p preconditioner (z = P^-1 r), to the relative tolerance
+       * <Solver/Linear solver tolerance>, or to @p tolerance if that is
+       * looser (an inexact Newton iteration's forcing term); returns the
+       * number of iterations. Throws with a diagnosis if the solver fails.
        */
       unsigned int
       solve(const Operator                      &system,
             const Operator                      &preconditioner,
             const bool                           symmetric,
             TrilinosWrappers::MPI::Vector       &x,
-            const TrilinosWrappers::MPI::Vector &b);
+            const TrilinosWrappers::MPI::Vector &b,
+            const double                         tolerance = 0);
 
       /// Numeric factorisations done by the direct solvers so far.
       unsigned int
