@@ -270,13 +270,38 @@ namespace rupture
             {
               if (cell->at_boundary(f))
                 continue;
-              AssertThrow(!cell->neighbor(f)->has_children() &&
-                            cell->neighbor(f)->level() == cell->level(),
-                          ExcMessage("The fault interface must be refined "
-                                     "alike on both sides (no hanging nodes "
-                                     "on it)."));
+              // Hanging nodes may lie anywhere but on the fault itself.
               const auto neighbor = cell->neighbor(f);
-              if (neighbor->is_artificial() || neighbor->active_fe_index() != 1)
+              bool       across   = false;
+              if (neighbor->has_children())
+                {
+                  for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+                    {
+                      const auto child = cell->neighbor_child_on_subface(f, c);
+                      across           = across || (!child->is_artificial() &&
+                                          child->active_fe_index() == 1);
+                    }
+                }
+              else
+                across = (neighbor->level() != cell->level()) &&
+                         !neighbor->is_artificial() &&
+                         neighbor->active_fe_index() == 1;
+              if (across)
+                {
+                  std::ostringstream where;
+                  where << cell->face(f)->center();
+                  AssertThrow(false,
+                              ExcMessage(
+                                "The fault interface must be refined alike "
+                                "on both sides (no hanging nodes on it), but "
+                                "the cells at (" +
+                                where.str() +
+                                ") differ in size. Keep "
+                                "<Discretization/Refinement region> off the "
+                                "fault, or let it cover both sides."));
+                }
+              if (neighbor->has_children() || neighbor->is_artificial() ||
+                  neighbor->active_fe_index() != 1)
                 continue;
               const auto       face   = cell->face(f);
               const Point<dim> center = face->center();
@@ -1022,20 +1047,16 @@ namespace rupture
 
     template <int dim>
     void
-    Fault<dim>::precondition_pairs(const VectorType &r,
-                                   const VectorType &diagonal,
-                                   const VectorType &free,
-                                   VectorType       &z) const
+    Fault<dim>::prepare_pair_preconditioner(const VectorType &diagonal,
+                                            const VectorType &free) const
     {
-      const VectorType *const fields[4] = {&r, &diagonal, &free, &z};
-      for (unsigned int f = 0; f < 4; ++f)
-        pair_dofs.gather(fields[f]->trilinos_vector()[0], pair_values[f]);
-      const std::vector<double> &rs = pair_values[0], &ds = pair_values[1],
-                                &fs = pair_values[2];
-      std::vector<double>   &zs     = pair_values[3];
-      constexpr unsigned int n      = 2 * dim;
-      FullMatrix<double>     block(n, n), inverse(n, n);
-      Vector<double>         rhs(n), solution(n);
+      pair_dofs.gather(diagonal.trilinos_vector()[0], pair_values[0]);
+      pair_dofs.gather(free.trilinos_vector()[0], pair_values[1]);
+      const std::vector<double> &ds = pair_values[0], &fs = pair_values[1];
+      constexpr unsigned int     n = 2 * dim;
+      pair_block_inverses.resize(pairs.size() * n * n);
+      pair_point_inverses.resize(pairs.size() * n);
+      FullMatrix<double> block(n, n), inverse(n, n);
       for (unsigned int k = 0; k < pairs.size(); ++k)
         {
           const NodePair    &pair  = pairs[k];
@@ -1050,20 +1071,52 @@ namespace rupture
                 block(dim + i, j) -= d;
                 block(dim + i, dim + j) += d;
               }
+          // Constrained DoFs: identity rows and columns.
+          for (unsigned int i = 0; i < n; ++i)
+            if (fs[first + i] == 0)
+              for (unsigned int j = 0; j < n; ++j)
+                block(i, j) = block(j, i) = 0;
           for (unsigned int i = 0; i < n; ++i)
             {
-              rhs(i) = rs[first + i];
-              if (fs[first + i] == 0)
-                for (unsigned int j = 0; j < n; ++j)
-                  block(i, j) = block(j, i) = 0;
+              const bool   is_free = (fs[first + i] != 0);
+              const double d       = ds[first + i];
+              block(i, i) += (is_free ? d : 1);
+              // What the point-Jacobi part put into z at this entry.
+              pair_point_inverses[first + i] = (is_free && d > 0) ? 1 / d : 1;
             }
-          for (unsigned int i = 0; i < n; ++i)
-            block(i, i) += (fs[first + i] == 0 ? 1 : ds[first + i]);
           inverse.invert(block);
-          inverse.vmult(solution, rhs);
-          // z holds r / diag at these entries: add the difference.
+          std::copy(&inverse(0, 0),
+                    &inverse(0, 0) + n * n,
+                    pair_block_inverses.begin() + n * first);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::precondition_pairs(const VectorType &r, VectorType &z) const
+    {
+      constexpr unsigned int n = 2 * dim;
+      Assert(pair_block_inverses.size() == pairs.size() * n * n,
+             ExcMessage("prepare_pair_preconditioner() must come first."));
+      std::vector<double> &rs = pair_values[0];
+      std::vector<double> &zs = pair_values[1];
+      pair_dofs.gather(r.trilinos_vector()[0], rs);
+      zs.resize(rs.size());
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          const unsigned int first   = n * k;
+          const double      *inverse = pair_block_inverses.data() + n * first;
           for (unsigned int i = 0; i < n; ++i)
-            zs[first + i] = solution(i) - zs[first + i];
+            {
+              double solution = 0;
+              for (unsigned int j = 0; j < n; ++j)
+                solution += inverse[i * n + j] * rs[first + j];
+              // z holds the point-Jacobi value here: add the difference.
+              zs[first + i] =
+                solution - pair_point_inverses[first + i] * rs[first + i];
+            }
         }
       pair_dofs.scatter_add(zs, z.trilinos_vector()[0]);
     }

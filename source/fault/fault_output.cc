@@ -269,13 +269,13 @@ namespace rupture
               rate += s.weights[k] * r.slip_velocity;
               traction += s.weights[k] * r.traction;
             }
-          s.rows.push_back({time,
-                            strike_component(slip),
-                            strike_component(rate),
-                            strike_component(traction) / 1e6,
-                            dip_component(slip),
-                            dip_component(rate),
-                            dip_component(traction) / 1e6});
+          s.rows.push_back({{time,
+                             strike_component(slip),
+                             strike_component(rate),
+                             strike_component(traction) / 1e6,
+                             dip_component(slip),
+                             dip_component(rate),
+                             dip_component(traction) / 1e6}});
         }
     }
 

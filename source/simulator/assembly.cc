@@ -289,7 +289,15 @@ namespace rupture
                         "use the implicit scheme."));
       }
     const double n_steps = std::ceil(duration / time_step - 1e-9);
-    time_step            = duration / n_steps;
+    AssertThrow(n_steps >= 1 && n_steps <= 1e9,
+                ExcMessage(
+                  "The phase of " + std::to_string(duration) +
+                  " s with time steps of " + std::to_string(time_step) +
+                  " s would take " + std::to_string(n_steps) +
+                  " steps. Allowed are 1 to 1e9 steps: check <Time "
+                  "integration/End time> and <Time step> (or those of its "
+                  "<Loading phase>)."));
+    time_step = duration / n_steps;
 
     if (scheme == Scheme::explicit_central_difference)
       prepare_explicit_work();
@@ -642,7 +650,7 @@ namespace rupture
     for (unsigned int i = 0; i < n; ++i)
       zs[i] = (fr[i] != 0 && ds[i] > 0) ? rs[i] / ds[i] : rs[i];
     if (fault)
-      fault->precondition_pairs(r, system_diagonal, free_dofs, z);
+      fault->precondition_pairs(r, z);
   }
 
 

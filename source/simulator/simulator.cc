@@ -48,6 +48,23 @@ namespace rupture
                         Patterns::Integer(0, 12),
                         "Number of times each coarse cell of the scene is "
                         "refined (each halves the cell size).");
+      prm.declare_entry(
+        "Refinement region",
+        "0",
+        Patterns::Anything(),
+        "Cells whose centre makes this function of position (x, y and, in "
+        "3-D, z) positive are refined <Refinement region levels> more times "
+        "after the global refinement, e.g. 'x < 1000 ? 1 : 0' or "
+        "'abs(z) < 5000'. Neighbouring cells differ by at most one level; "
+        "the hanging nodes between them are constrained. The fault must be "
+        "refined alike on both sides: a region that ends on the fault is "
+        "an error.");
+      prm.declare_entry("Refinement region levels",
+                        "0",
+                        Patterns::Integer(0, 6),
+                        "How many times the cells of <Refinement region> "
+                        "are refined (each halves their size). 0 leaves the "
+                        "mesh as the global refinement made it.");
       prm.declare_entry("Polynomial degree",
                         "1",
                         Patterns::Integer(1, 2),
@@ -358,7 +375,13 @@ namespace rupture
     test_mode        = prm.get_bool("Test mode");
 
     prm.enter_subsection("Discretization");
-    n_global_refinements  = prm.get_integer("Initial global refinement");
+    n_global_refinements = prm.get_integer("Initial global refinement");
+    n_region_refinements = prm.get_integer("Refinement region levels");
+    refinement_region =
+      Utilities::parse_function<dim>(prm.get("Refinement region"),
+                                     1,
+                                     "Discretization/Refinement region",
+                                     dim == 2 ? "x,y" : "x,y,z");
     fe_degree             = prm.get_integer("Polynomial degree");
     use_lumped_mass       = (prm.get("Mass matrix") == "lumped");
     stiffness_matrix_free = (prm.get("Stiffness operator") == "matrix free");
@@ -481,6 +504,35 @@ namespace rupture
     for (const auto &cell : triangulation.active_cell_iterators())
       materials.check_material_id(cell->material_id());
     triangulation.refine_global(n_global_refinements);
+    for (unsigned int level = 0; level < n_region_refinements; ++level)
+      {
+        std::string bad_centre;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const double value = refinement_region->value(cell->center());
+              if (!std::isfinite(value) && bad_centre.empty())
+                {
+                  std::ostringstream where;
+                  where << "(" << cell->center() << ")";
+                  bad_centre = where.str();
+                }
+              if (value > 0)
+                cell->set_refine_flag();
+            }
+        // Every process stops, not only the one that found the value.
+        AssertThrow(dealii::Utilities::MPI::max(bad_centre.empty() ? 0 : 1,
+                                                communicator) == 0,
+                    ExcMessage("<Discretization/Refinement region> is not a "
+                               "finite number at the cell centre " +
+                               (bad_centre.empty() ? std::string("of a cell "
+                                                                 "of another "
+                                                                 "process") :
+                                                     bad_centre) +
+                               ". Allowed are expressions that are finite "
+                               "everywhere in the model."));
+        triangulation.execute_coarsening_and_refinement();
+      }
 
     std::vector<double> cells_per_material(materials.n_materials(), 0.);
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -834,7 +886,7 @@ namespace rupture
             if (has_absorbing)
               compute_absorbing_force(velocity, absorbing_force);
           }
-        run_phase(start + time_parameters.end_time, false);
+        run_phase(time_parameters.end_time, false);
       }
     else
       run_phase(time_parameters.end_time, false);
@@ -896,12 +948,16 @@ namespace rupture
 
   template <int dim>
   bool
-  Simulator<dim>::run_phase(const double end_time,
+  Simulator<dim>::run_phase(const double duration,
                             const bool   stop_when_weakening)
   {
-    const double       start   = time;
-    const unsigned int n_steps = static_cast<unsigned int>(
-      std::ceil((end_time - start) / time_step - 1e-9));
+    // Steps are counted in the phase's own time: after a long loading
+    // phase the absolute time has lost the digits of a short dynamic
+    // phase (3e9 s + 0.3 s).
+    const double       start    = time;
+    const double       end_time = start + duration;
+    const unsigned int n_steps =
+      static_cast<unsigned int>(std::ceil(duration / time_step - 1e-9));
     pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
           << n_steps << " steps to t = " << end_time << " s\n";
     substep_depth           = 0;
@@ -926,11 +982,7 @@ namespace rupture
         // The time since the start of the dynamic phase, without the
         // round-off of the absolute time after a long loading phase.
         const double phase_time =
-          (start - dynamic_start) +
-          ((i == n_steps && std::abs(end_time - start - n_steps * time_step) >
-                              1e-6 * time_step) ?
-             end_time - start :
-             i * time_step);
+          (start - dynamic_start) + ((i == n_steps) ? duration : i * time_step);
         if (fault)
           fault->set_time(time);
 

@@ -65,7 +65,8 @@ namespace rupture
           "dynamic steps of the implicit scheme at time steps near the "
           "explicit limit; in quasi-static steps its iteration count grows "
           "with the number of cells across the model (doc/performance.md). "
-          "Ignored by the direct solvers, which always store the matrix.");
+          "'block Jacobi' together with a direct 'Linear solver' is an "
+          "error: the direct solvers store and factorise the matrix.");
         prm.declare_entry(
           "AMG aggregation",
           "uncoupled",
@@ -139,8 +140,16 @@ namespace rupture
     {
       prm.enter_subsection("Solver");
       solver_type  = prm.get("Linear solver");
-      block_jacobi = (prm.get("Preconditioner") == "block Jacobi") &&
-                     solver_type != "direct" && solver_type != "MUMPS";
+      block_jacobi = (prm.get("Preconditioner") == "block Jacobi");
+      AssertThrow(
+        !block_jacobi || (solver_type != "direct" && solver_type != "MUMPS"),
+        ExcMessage("<Solver/Preconditioner> = block Jacobi needs a Krylov "
+                   "<Solver/Linear solver> (automatic, CG or GMRES), but "
+                   "it is '" +
+                   solver_type +
+                   "': a direct solver stores and factorises the matrix and "
+                   "uses no preconditioner. Set one of the two entries "
+                   "differently."));
       aggregation           = prm.get("AMG aggregation");
       smoother              = prm.get("AMG smoother");
       smoother_sweeps       = prm.get_integer("AMG smoother sweeps");

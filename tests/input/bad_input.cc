@@ -119,6 +119,14 @@ main(int argc, char **argv)
           "  set Linear solver tolerance = 1e-30\n"
           "end\nsubsection Boundary conditions\n  set Traction = top: 1e6; "
           "-1e7\nend\nset Output directory = failed-run\n");
+  write("refined_fault.prm",
+        base + fault +
+          "end\nsubsection Discretization\n  set Refinement region = y < "
+          "500 ? 1 : 0\n  set Refinement region levels = 1\nend\n");
+  write("refinement_region_nan.prm",
+        base +
+          "subsection Discretization\n  set Refinement region = log(x - "
+          "2000)\n  set Refinement region levels = 1\nend\n");
   write("fault_explicit.prm",
         base + fault +
           "end\nsubsection Time integration\n  set Scheme = explicit "
@@ -167,6 +175,15 @@ main(int argc, char **argv)
   check("mu_0 below mu_d", {"fault_friction.prm"});
   check("forced slip normal to the fault", {"forced_direction.prm"});
   check("linear solve that does not converge", {"solver_fails.prm"});
+  check("refinement region that ends on the fault", {"refined_fault.prm"});
+  check("refinement region that is not finite",
+        {"refinement_region_nan.prm"});
+  check("block Jacobi with a direct solver",
+        {"valid.prm",
+         "--set",
+         "Solver/Linear solver=MUMPS",
+         "--set",
+         "Solver/Preconditioner=block Jacobi"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

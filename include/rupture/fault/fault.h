@@ -290,18 +290,26 @@ namespace rupture
 
       /**
        * The fault part of a block-Jacobi preconditioner of the effective
-       * stiffness A + T: @p z holds the point-Jacobi solution r / diag(A)
-       * (and r at constrained DoFs); at each pair's 2 dim DoFs it is
-       * replaced by the solution of the pair's block diag(A) + T_pair,
-       * which the stiff penalty dominates, exactly. @p free is 1 at free
-       * DoFs and 0 at constrained ones, whose rows and columns are the
-       * identity. All owned vectors. Collective.
+       * stiffness A + T, set up for the contact tangent T of the last
+       * assemble(): inverts each pair's 2 dim x 2 dim block diag(A) +
+       * T_pair, which the stiff penalty dominates, and keeps the inverses
+       * for precondition_pairs(). @p diagonal is diag(A); @p free is 1 at
+       * free DoFs and 0 at constrained ones, whose rows and columns are the
+       * identity. Owned vectors. Collective.
        */
       void
-      precondition_pairs(const VectorType &r,
-                         const VectorType &diagonal,
-                         const VectorType &free,
-                         VectorType       &z) const;
+      prepare_pair_preconditioner(const VectorType &diagonal,
+                                  const VectorType &free) const;
+
+      /**
+       * Applies the fault part of the block-Jacobi preconditioner: @p z
+       * holds the point-Jacobi solution r / diag(A) (and r at constrained
+       * DoFs); at each pair's 2 dim DoFs it is replaced by the solution of
+       * the pair's block, with the inverses of the last
+       * prepare_pair_preconditioner(). Collective.
+       */
+      void
+      precondition_pairs(const VectorType &r, VectorType &z) const;
 
       /**
        * True if no pair slipped in the last assemble().
@@ -393,6 +401,9 @@ namespace rupture
       /// or added to them.
       SparseGather                pair_dofs;
       mutable std::vector<double> pair_values[4];
+      // Each pair's inverted block (row-major) and the point-Jacobi factor
+      // of its entries, from prepare_pair_preconditioner().
+      mutable std::vector<double> pair_block_inverses, pair_point_inverses;
       /// Fault faces of locally owned cells, as vertex keys.
       std::vector<std::vector<types::global_dof_index>> owned_faces;
       unsigned int                                      n_global_split    = 0;

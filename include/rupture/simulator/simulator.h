@@ -116,11 +116,11 @@ namespace rupture
     void
     compute_acceleration(const VectorType &load);
     /**
-     * Step from the current time to @p end_time with the current scheme;
+     * Step over @p duration from the current time with the current scheme;
      * returns false if a stop criterion ended the phase early.
      */
     bool
-    run_phase(const double end_time, const bool stop_when_weakening);
+    run_phase(const double duration, const bool stop_when_weakening);
     /**
      * Set the effective stiffness stiffness_factor K + mass_factor M +
      * absorbing_factor C_absorbing of the coming steps (Rayleigh damping
@@ -305,9 +305,12 @@ namespace rupture
     std::string  output_directory;
     bool         test_mode;
     unsigned int n_global_refinements;
-    unsigned int fe_degree;
-    bool         use_lumped_mass;
-    bool         stiffness_matrix_free = true;
+    // <Discretization/Refinement region> and its number of levels.
+    std::unique_ptr<FunctionParser<dim>> refinement_region;
+    unsigned int                         n_region_refinements;
+    unsigned int                         fe_degree;
+    bool                                 use_lumped_mass;
+    bool                                 stiffness_matrix_free = true;
     /// The matrix-free stiffness operator, if used, and the vectors that
     /// carry its argument and result.
     std::unique_ptr<Operators::ElasticOperator<dim>>   elastic_operator;
