@@ -124,9 +124,8 @@ main(int argc, char **argv)
           "end\nsubsection Discretization\n  set Refinement region = y < "
           "500 ? 1 : 0\n  set Refinement region levels = 1\nend\n");
   write("refinement_region_nan.prm",
-        base +
-          "subsection Discretization\n  set Refinement region = log(x - "
-          "2000)\n  set Refinement region levels = 1\nend\n");
+        base + "subsection Discretization\n  set Refinement region = log(x - "
+               "2000)\n  set Refinement region levels = 1\nend\n");
   write("fault_explicit.prm",
         base + fault +
           "end\nsubsection Time integration\n  set Scheme = explicit "
@@ -176,8 +175,7 @@ main(int argc, char **argv)
   check("forced slip normal to the fault", {"forced_direction.prm"});
   check("linear solve that does not converge", {"solver_fails.prm"});
   check("refinement region that ends on the fault", {"refined_fault.prm"});
-  check("refinement region that is not finite",
-        {"refinement_region_nan.prm"});
+  check("refinement region that is not finite", {"refinement_region_nan.prm"});
   check("block Jacobi with a direct solver",
         {"valid.prm",
          "--set",
