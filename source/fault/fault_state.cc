@@ -1,0 +1,242 @@
+// The fault's state between steps: gathering node records, phases, time, and
+// statistics.
+
+#include <rupture/base/utilities.h>
+#include <rupture/fault/fault.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Fault
+  {
+    template <int dim>
+    std::vector<typename Fault<dim>::NodeRecord>
+    Fault<dim>::gather(const std::set<types::global_dof_index> *keys) const
+    {
+      std::vector<NodeRecord> mine;
+      for (const auto &pair : pairs)
+        if (!keys || keys->count(pair.minus[0]))
+          {
+            NodeRecord r;
+            r.key           = pair.minus[0];
+            r.location      = pair.location;
+            r.normal        = pair.normal;
+            r.slip          = pair.slip - pair.slip_at_start;
+            r.slip_velocity = pair.slip_velocity;
+            r.traction      = pair.trial.traction;
+            r.slip_path     = pair.state.slip_path;
+            r.friction      = pair.trial.friction;
+            r.rupture_time  = pair.rupture_time;
+            r.status        = static_cast<int>(pair.trial.status);
+            mine.push_back(r);
+          }
+      const auto all = dealii::Utilities::MPI::gather(communicator, mine, 0);
+      std::vector<NodeRecord> result;
+      for (const auto &part : all)
+        result.insert(result.end(), part.begin(), part.end());
+      return result;
+    }
+
+
+
+    template <int dim>
+    std::vector<std::vector<types::global_dof_index>>
+    Fault<dim>::gather_faces() const
+    {
+      const auto all =
+        dealii::Utilities::MPI::gather(communicator, owned_faces, 0);
+      std::vector<std::vector<types::global_dof_index>> result;
+      for (const auto &part : all)
+        result.insert(result.end(), part.begin(), part.end());
+      return result;
+    }
+
+
+
+    template <int dim>
+    unsigned long
+    Fault<dim>::status_signature() const
+    {
+      unsigned long signature = 0;
+      for (const auto &pair : pairs)
+        signature += (static_cast<unsigned long>(pair.trial.status) + 1) *
+                     (pair.minus[0] % 1000003 + 1);
+      return dealii::Utilities::MPI::sum(signature, communicator);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::set_time(const double time)
+    {
+      friction_law->set_time(time);
+      current_time = time;
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    Fault<dim>::imposed_slip(const NodePair &pair, const double delay) const
+    {
+      const double t = current_time + delay - dynamic_start;
+      forced_slip->set_time(t);
+      const double       s = forced_slip->value(pair.location);
+      std::ostringstream message;
+      message << "<Fault/Forced slip/Slip> must be finite and >= 0 (m), but "
+              << "is " << s << " at " << pair.location << " and t = " << t
+              << " s.";
+      AssertThrow(std::isfinite(s) && s >= 0, ExcMessage(message.str()));
+      return s * pair.forced_direction;
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::start_dynamic_phase(const double time)
+    {
+      friction_law->start_dynamic_phase(time);
+      friction_law->enable_weakening(true);
+      dynamic_start      = time;
+      forced_slip_active = true;
+      for (auto &pair : pairs)
+        pair.slip_at_start = pair.slip;
+      // Weakening counts the slip of the dynamic phase: a bonded zone
+      // breaks when the dynamic phase starts.
+      for (auto &pair : pairs)
+        pair.state.slip_path = 0;
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::start_loading_phase()
+    {
+      friction_law->enable_weakening(false);
+      forced_slip_active = false;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::n_weakening() const
+    {
+      unsigned int n = 0;
+      for (const auto &pair : pairs)
+        if (pair.trial.status == ContactStatus::slip &&
+            friction_law->can_weaken(to_3d(pair.location), pair.state))
+          ++n;
+      return dealii::Utilities::MPI::sum(n, communicator);
+    }
+
+
+
+    template <int dim>
+    bool
+    Fault<dim>::all_stuck() const
+    {
+      unsigned int n = 0;
+      for (const auto &pair : pairs)
+        if (pair.trial.status != ContactStatus::stick)
+          ++n;
+      return dealii::Utilities::MPI::sum(n, communicator) == 0;
+    }
+
+
+
+    template <int dim>
+    Statistics
+    Fault<dim>::statistics() const
+    {
+      Statistics s;
+      double     area = 0, moment = 0, normal = 0, shear = 0, total_area = 0;
+      unsigned   n_slip = 0, n_open = 0, unstable = 0;
+      double     max_slip = 0, max_rate = 0;
+      for (const auto &pair : pairs)
+        {
+          if (pair.trial.status == ContactStatus::slip)
+            {
+              ++n_slip;
+              area += pair.area;
+            }
+          if (pair.trial.status == ContactStatus::open)
+            ++n_open;
+          if (pair.trial.unstable_softening)
+            ++unstable;
+          const double slip = (pair.slip - pair.slip_at_start).norm();
+          max_slip          = std::max(max_slip, slip);
+          max_rate          = std::max(max_rate, pair.state.slip_rate);
+          moment += pair.shear_modulus * pair.area * slip;
+          const double tn = pair.trial.traction * pair.normal;
+          normal += pair.area * tn;
+          shear += pair.area * (pair.trial.traction - tn * pair.normal).norm();
+          total_area += pair.area;
+        }
+      total_area = dealii::Utilities::MPI::sum(total_area, communicator);
+      if (total_area > 0)
+        {
+          s.mean_normal_traction =
+            dealii::Utilities::MPI::sum(normal, communicator) / total_area;
+          s.mean_shear_traction =
+            dealii::Utilities::MPI::sum(shear, communicator) / total_area;
+        }
+      s.n_nodes        = n_global_split;
+      s.n_slipping     = dealii::Utilities::MPI::sum(n_slip, communicator);
+      s.n_open         = dealii::Utilities::MPI::sum(n_open, communicator);
+      s.slipping_area  = dealii::Utilities::MPI::sum(area, communicator);
+      s.seismic_moment = dealii::Utilities::MPI::sum(moment, communicator);
+      s.max_slip       = dealii::Utilities::MPI::max(max_slip, communicator);
+      s.max_slip_rate  = dealii::Utilities::MPI::max(max_rate, communicator);
+      s.frictional_energy =
+        dealii::Utilities::MPI::sum(frictional_energy, communicator);
+      s.unstable_softening =
+        dealii::Utilities::MPI::sum(unstable, communicator) > 0;
+      return s;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::n_split_nodes() const
+    {
+      return n_global_split;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Fault<dim>::n_welded_nodes() const
+    {
+      return n_global_welded;
+    }
+
+
+
+    template class Fault<2>;
+    template class Fault<3>;
+  } // namespace Fault
+} // namespace rupture

@@ -1,0 +1,563 @@
+// Newton's method for implicit Newmark and quasi-static steps with a penalty
+// fault, and the step cuts of implicit_step().
+
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+
+namespace rupture
+{
+  template <int dim>
+  void
+  Simulator<dim>::assemble_contact(VectorType  &force,
+                                   const bool   with_tangent,
+                                   const double sign)
+  {
+    TimerOutput::Scope t(timer, "Fault contact");
+    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
+    u_ghost = displacement;
+    fault->assemble(u_ghost,
+                    time_step,
+                    hanging_constraints,
+                    force,
+                    increment_constraints,
+                    with_tangent ? &system_matrix : nullptr,
+                    sign);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::solve_step(const VectorType            &old_u,
+                             const std::function<void()> &update_rates,
+                             const std::function<void()> &compute_residual,
+                             VectorType                  &residual,
+                             const VectorType            *predicted_increment)
+  {
+    VectorType free_residual(residual), increment(residual), scratch(residual);
+
+    displacement = old_u;
+    if (predicted_increment)
+      {
+        // Only at the free DoFs: the prescribed ones follow their boundary
+        // motion, the hanging ones their parents.
+        scratch = *predicted_increment;
+        increment_constraints.set_zero(scratch);
+        displacement += scratch;
+      }
+    add_kinematic_increment(displacement);
+    distribute_hanging(displacement);
+
+    double        reference         = 0;
+    double        increment_norm    = 0;
+    double        increment_ratio   = 0;
+    unsigned long last_signature    = 0;
+    unsigned int  linear_iterations = 0;
+    last_linear_iterations          = 0;
+    stick_crossings_limited         = 0;
+    std::vector<double>        norms;
+    std::vector<unsigned long> signatures;
+    // The inexact Newton forcing term (<Solver/Newton forcing>).
+    double eta       = newton_forcing;
+    double last_norm = 0;
+    // The line search leaves the residual of the new iterate behind.
+    bool residual_current = false;
+    for (unsigned int k = 0;; ++k)
+      {
+        if (!residual_current)
+          {
+            update_rates();
+            compute_residual();
+            free_residual = residual;
+            increment_constraints.set_zero(free_residual);
+          }
+        residual_current  = false;
+        const double norm = free_residual.l2_norm();
+        // Names the place and the likely cause, and stops the run.
+        if (!std::isfinite(norm))
+          check_finite(free_residual,
+                       "force residual of Newton iteration " +
+                         std::to_string(k));
+
+        if (!fault)
+          {
+            // Linear: the first solve is exact up to the solver tolerance.
+            if (k == 1)
+              break;
+          }
+        else
+          {
+            const unsigned long signature = fault->status_signature();
+            if (k == 0)
+              {
+                // The force scale of the step: the residual may start tiny
+                // (a body near equilibrium), so the internal forces count.
+                apply_stiffness(old_u, scratch);
+                increment_constraints.set_zero(scratch);
+                reference = std::max({norm, scratch.l2_norm(), 1e-300});
+              }
+            else
+              {
+                // The paper's two criteria (Fig. 6). A step in which every
+                // node stuck in this and the last iteration was linear, so
+                // its one solve is exact.
+                const double change = [&]() {
+                  scratch = displacement;
+                  scratch -= old_u;
+                  return scratch.l2_norm();
+                }();
+                const bool force_ok =
+                  norm <= newton_force_tolerance * reference;
+                // A step that changes the displacement very little (the
+                // first dynamic steps after a long loading phase: 1e-11 m
+                // on a field of metres) cannot ask for a correction below
+                // what round-off in the penalty system still resolves: a
+                // correction below 1e-11 of the whole displacement counts
+                // as converged.
+                const double round_off = 1e-11 * displacement.l2_norm();
+                const bool   displacement_ok =
+                  increment_norm <=
+                  std::max(newton_displacement_tolerance * change, round_off);
+                increment_ratio = increment_norm / std::max(change, 1e-300);
+                const bool linear =
+                  (signature == last_signature) && fault->all_stuck();
+                if (force_ok && (displacement_ok || linear))
+                  break;
+              }
+            // A step whose residual has not halved in the last <Newton
+            // stall iterations> iterations is cycling (typically a few
+            // nodes switching between stick and slip): give up at once, so
+            // that the step is cut instead of iterating to the limit (only
+            // where it can be cut: not in quasi-static steps, nor at the
+            // last level of cuts).
+            norms.push_back(norm);
+            signatures.push_back(signature);
+            const unsigned int window = newton_stall_iterations;
+            const bool         stalled =
+              newton_may_cut && (window > 0) && (norms.size() > window) &&
+              (*std::min_element(norms.end() - window, norms.end()) >
+               0.5 * *std::min_element(norms.begin(), norms.end() - window));
+            if (k == max_newton_iterations || stalled)
+              {
+                const Fault::Statistics f = fault->statistics();
+                std::ostringstream      message;
+                message << "Newton's method did not converge in step " << step
+                        << " (t = " << time << " s): ";
+                if (stalled)
+                  {
+                    std::vector<unsigned long> recent(signatures.end() - window,
+                                                      signatures.end());
+                    std::sort(recent.begin(), recent.end());
+                    const auto patterns =
+                      std::unique(recent.begin(), recent.end()) -
+                      recent.begin();
+                    message << "the force residual stalled at "
+                            << norm / reference
+                            << " of its first value (wanted "
+                            << newton_force_tolerance
+                            << ") and did not halve in the last " << window
+                            << " iterations, which went through " << patterns
+                            << " different patterns of stick, slip and open "
+                               "fault nodes";
+                  }
+                else
+                  message << "within " << max_newton_iterations
+                          << " iterations the force residual fell to "
+                          << norm / reference << " of its first value (wanted "
+                          << newton_force_tolerance << ")";
+                if (norm <= newton_force_tolerance * reference)
+                  message << ", but the last correction was " << increment_ratio
+                          << " of the step's displacement change (wanted "
+                          << newton_displacement_tolerance
+                          << ", or below 1e-11 of the whole displacement)";
+                message << "; " << f.n_slipping << " slipping and " << f.n_open
+                        << " open fault nodes. ";
+                // The effective stiffness without the contact (the matrix
+                // has it added for each solve only).
+                VectorType diagonal(system_diagonal);
+                if (!linear_solver.matrix_free())
+                  {
+                    diagonal.reinit(locally_owned_dofs, communicator);
+                    for (const auto i : locally_owned_dofs)
+                      diagonal(i) = system_matrix.diag_element(i);
+                    diagonal.compress(VectorOperation::insert);
+                  }
+                const unsigned int n_steep =
+                  fault->n_steeper_than_body(diagonal);
+                std::string reason =
+                  stalled ? "the residual stalled" : "too many iterations";
+                if (f.unstable_softening)
+                  {
+                    message << "Slip weakening is steeper than the "
+                               "tangential penalty at some nodes ((mu_0 - "
+                               "mu_d) / L_d |T_n| > p_t), so their traction "
+                               "drops to the residual strength at once: "
+                               "raise <Fault/Tangential penalty> or L_d.";
+                    reason += "; weakening steeper than the penalty";
+                  }
+                else if (n_steep > 0)
+                  {
+                    message << "At " << n_steep
+                            << " slipping fault node(s) slip weakening is "
+                               "steeper than the stiffness of the body that "
+                               "holds them (the tangent is indefinite there): "
+                               "reduce <Time integration/Time step> (the "
+                               "inertia term stiffens as 1/dt^2), or raise "
+                               "the slip-weakening distance or the mesh "
+                               "resolution.";
+                    reason += "; weakening steeper than the body at " +
+                              std::to_string(n_steep) + " node(s)";
+                  }
+                else
+                  message << "Reduce <Time integration/Time step>, or raise "
+                             "<Solver/Maximum Newton iterations> (or "
+                             "<Solver/Newton stall iterations>).";
+                throw NewtonFailure(message.str(), reason);
+              }
+            last_signature = signature;
+          }
+
+        if (fault && !linear_solver.matrix_free())
+          {
+            // Effective stiffness plus the contact tangent (nonsymmetric
+            // where nodes slip), for this iteration only.
+            scratch = 0;
+            assemble_contact(scratch, true, +1);
+            // The preconditioner is rebuilt when the pattern of stick, slip
+            // and open nodes changes; in between GMRES solves with the
+            // current tangent and the last preconditioner (with the fault
+            // pair transform it holds its own copy of the matrix).
+            const unsigned long signature = fault->status_signature();
+            if (k == 0 || signature != preconditioner_signature ||
+                !linear_solver.keeps_own_matrix())
+              {
+                TimerOutput::Scope t(timer, "Preconditioner set-up");
+                linear_solver.initialize(system_matrix,
+                                         null_space,
+                                         false,
+                                         fe_degree > 1);
+                preconditioner_signature = signature;
+              }
+          }
+        double linear_tolerance = 0;
+        // Where every fault node sticks the step is linear and one exact
+        // solve ends it.
+        if (fault && linear_solver.matrix_free() && newton_forcing > 0 &&
+            !fault->all_stuck())
+          {
+            if (k > 0)
+              {
+                const double ratio   = norm / std::max(last_norm, 1e-300);
+                const double guarded = 0.9 * eta * eta;
+                eta                  = 0.9 * ratio * ratio;
+                if (guarded > 0.1)
+                  eta = std::max(eta, guarded);
+                eta = std::min(eta, newton_forcing);
+              }
+            // Solving far below what the force tolerance still asks for
+            // is wasted; a last solve to a hundredth of it keeps the
+            // residual, and so the energy budget, well inside the
+            // tolerance. Once the force criterion holds, only the
+            // displacement criterion is left, and it needs a nearly exact
+            // Newton correction: a loose one stalls the line search (seen
+            // at 10 km cells in contrib/iteration-study).
+            linear_tolerance =
+              (norm > newton_force_tolerance * reference) ?
+                std::max(eta,
+                         std::min(0.5,
+                                  0.01 * newton_force_tolerance * reference /
+                                    std::max(norm, 1e-300))) :
+                std::min(eta, 1e-3);
+          }
+        last_norm = norm;
+        increment = 0;
+        {
+          TimerOutput::Scope t(timer, "Linear solve");
+          if (linear_solver.matrix_free())
+            {
+              // The contact tangent is that of the pairs' trial states, from
+              // the last residual.
+              if (fault)
+                {
+                  TimerOutput::Scope t(timer, "Block Jacobi");
+                  fault->prepare_pair_preconditioner(system_diagonal,
+                                                     free_dofs);
+                }
+              linear_iterations = linear_solver.solve(
+                [this](const VectorType &x, VectorType &y) {
+                  apply_system(x, y);
+                },
+                [this](const VectorType &r, VectorType &z) {
+                  precondition_system(r, z);
+                },
+                !fault || fault->all_stuck(),
+                increment,
+                free_residual,
+                linear_tolerance);
+            }
+          else
+            linear_iterations =
+              linear_solver.solve(system_matrix, increment, free_residual);
+          last_linear_iterations += linear_iterations;
+        }
+        if (fault && !linear_solver.matrix_free())
+          {
+            scratch = 0;
+            assemble_contact(scratch, true, -1);
+          }
+        increment_constraints.distribute(increment);
+        // Nodes that would jump across the stick region stop inside it
+        // (Fault::limit_stick_crossings()).
+        unsigned int n_limited = 0;
+        if (fault && limit_stick_crossings && !stick_crossing_limit_suspended)
+          {
+            VectorType d_ghost(locally_owned_dofs,
+                               locally_relevant_dofs,
+                               communicator);
+            d_ghost   = increment;
+            scratch   = 0;
+            n_limited = fault->limit_stick_crossings(d_ghost,
+                                                     increment_constraints,
+                                                     scratch);
+            stick_crossings_limited += n_limited;
+            if (n_limited > 0)
+              {
+                increment += scratch;
+                increment_constraints.distribute(increment);
+              }
+          }
+        if (fault)
+          {
+            // Backtracking line search: slip weakening and changes between
+            // stick and slip can make a full Newton step overshoot. A step
+            // with limited stick crossings is taken in full: it is no longer
+            // a Newton step, and it puts those nodes into stick, from where
+            // the next iteration is exact for them; a shortened step would
+            // leave them slipping and the limit would repeat.
+            const VectorType u_iteration(displacement);
+            double           alpha = 1;
+            for (unsigned int trial = 0;; ++trial)
+              {
+                displacement = u_iteration;
+                displacement.add(alpha, increment);
+                update_rates();
+                compute_residual();
+                free_residual = residual;
+                increment_constraints.set_zero(free_residual);
+                if (free_residual.l2_norm() <= (1 - 1e-4 * alpha) * norm ||
+                    trial == 6 || n_limited > 0)
+                  break;
+                alpha *= 0.5;
+              }
+            increment *= alpha;
+            residual_current = true;
+            if (print_newton_iterations)
+              {
+                const Fault::Statistics f = fault->statistics();
+                pcout << "      Newton " << k << ": residual "
+                      << norm / reference
+                      << ", linear solve: " << linear_iterations
+                      << " iterations, residual "
+                      << linear_solver.last_relative_residual()
+                      << ", factorisations " << linear_solver.n_factorizations()
+                      << ", line search " << alpha;
+                if (limit_stick_crossings && !stick_crossing_limit_suspended)
+                  pcout << ", " << n_limited << " limited";
+                pcout << ", " << f.n_slipping << " slipping, " << f.n_open
+                      << " open, pattern " << std::hex
+                      << (signatures.back() & 0xffffff) << std::dec << "\n";
+              }
+          }
+        else
+          displacement += increment;
+        increment_norm         = increment.l2_norm();
+        last_newton_iterations = k + 1;
+      }
+    check_finite(displacement, "displacement");
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::implicit_step()
+  {
+    // Try the step; if Newton's method fails, redo it as two half steps,
+    // recursively, up to <Solver/Maximum step cuts> times. The fault state
+    // and the energy budget change only when a (sub)step has converged.
+    // After a cut the following steps start from the sub-step size that
+    // converged (a step that failed at full size tends to fail again in the
+    // next one), and double it again after two steps without a cut.
+    const double end = time, dt = time_step;
+    const auto   set_step = [&](const double h) {
+      time_step = h;
+      const TimeIntegration::NewmarkCoefficients c(time_parameters.beta,
+                                                   time_parameters.gamma,
+                                                   h);
+      assemble_system_matrix(1 + c.a1 * rayleigh_beta,
+                             c.a0 + c.a1 * rayleigh_alpha,
+                             c.a1);
+    };
+    unsigned int                                      deepest = 0;
+    bool                                              cut     = false;
+    std::function<void(double, double, unsigned int)> attempt =
+      [&](const double t_start, const double h, const unsigned int depth) {
+        const VectorType u(displacement), v(velocity), a(acceleration);
+        if (h != time_step)
+          set_step(h);
+        time = t_start + h;
+        if (fault)
+          fault->set_time(time);
+        // Give up early on a stalled Newton iteration only where the
+        // step can still be cut; at the last level it iterates on.
+        newton_may_cut = (depth < max_step_cuts);
+        try
+          {
+            try
+              {
+                implicit_substep();
+              }
+            catch (const NewtonFailure &failure)
+              {
+                // The stick-crossing limit can keep a node from the far
+                // side of its stick region where its solution lies (seen
+                // with time steps 100-1000 times the explicit limit): try
+                // the step once more without it before cutting it.
+                if (stick_crossings_limited == 0)
+                  throw;
+                displacement = u;
+                velocity     = v;
+                acceleration = a;
+                pcout << "    Newton failed with dt = " << h << " s ("
+                      << failure.reason
+                      << ") after limiting stick crossings: the step is "
+                         "tried again without the limit\n";
+                // (If it fails again, the catch below ends the suspension.)
+                stick_crossing_limit_suspended = true;
+                implicit_substep();
+                stick_crossing_limit_suspended = false;
+              }
+            newton_may_cut = false;
+            deepest        = std::max(deepest, depth);
+          }
+        catch (const NewtonFailure &failure)
+          {
+            newton_may_cut                 = false;
+            stick_crossing_limit_suspended = false;
+            if (depth == max_step_cuts)
+              throw NewtonFailure(std::string(failure.what()) +
+                                    " The step was cut " +
+                                    std::to_string(depth) +
+                                    " times (<Solver/Maximum step cuts>).",
+                                  failure.reason);
+            displacement = u;
+            velocity     = v;
+            acceleration = a;
+            pcout << "    Newton failed with dt = " << h << " s ("
+                  << failure.reason << "): the step is cut in half\n";
+            ++n_step_cuts;
+            cut = true;
+            attempt(t_start, h / 2, depth + 1);
+            attempt(t_start + h / 2, h / 2, depth + 1);
+          }
+      };
+    const unsigned int start_depth = std::min(substep_depth, max_step_cuts);
+    const unsigned int n_substeps  = 1u << start_depth;
+    if (n_substeps > 1)
+      pcout << "    taken as " << n_substeps << " sub-steps of "
+            << dt / n_substeps << " s after an earlier step cut\n";
+    for (unsigned int i = 0; i < n_substeps; ++i)
+      attempt(end - dt + i * (dt / n_substeps), dt / n_substeps, start_depth);
+    if (cut)
+      {
+        substep_depth     = deepest;
+        steps_without_cut = 0;
+      }
+    else if (substep_depth > 0 && ++steps_without_cut >= 2)
+      {
+        --substep_depth;
+        steps_without_cut = 0;
+      }
+    if (time_step != dt)
+      set_step(dt);
+    time = end;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::implicit_substep()
+  {
+    TimerOutput::Scope                         t(timer, "Implicit step");
+    const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
+                                                 time_parameters.gamma,
+                                                 time_step);
+    const double                               gamma = time_parameters.gamma;
+
+    const VectorType old_u(displacement), old_v(velocity), old_a(acceleration);
+    VectorType load(displacement), residual(displacement), tmp(displacement),
+      cv(displacement);
+    assemble_load_vector(time, load);
+
+    // New velocity and acceleration as functions of the new displacement
+    // (Newmark, eq. 12), and the residual f - M a - C v - K u - F_contact.
+    const auto update_rates = [&]() {
+      acceleration = displacement;
+      acceleration -= old_u;
+      acceleration *= a.a0;
+      acceleration.add(-a.a2, old_v, -a.a3, old_a);
+      velocity = old_v;
+      velocity.add((1 - gamma) * time_step,
+                   old_a,
+                   gamma * time_step,
+                   acceleration);
+    };
+    const auto compute_residual = [&]() {
+      residual = load;
+      apply_stiffness(displacement, tmp);
+      residual -= tmp;
+      apply_mass(acceleration, tmp);
+      residual -= tmp;
+      compute_damping_force(velocity, cv);
+      residual -= cv;
+      if (fault)
+        {
+          tmp = 0;
+          assemble_contact(tmp, false, 1);
+          residual -= tmp;
+        }
+    };
+
+    // The predictor: the old motion carried on over the step.
+    std::unique_ptr<VectorType> predicted;
+    if (newton_predictor != "old displacement")
+      {
+        predicted = std::make_unique<VectorType>(old_v);
+        *predicted *= time_step;
+        if (newton_predictor == "constant acceleration")
+          predicted->add(0.5 * time_step * time_step, old_a);
+      }
+    solve_step(
+      old_u, update_rates, compute_residual, residual, predicted.get());
+    finish_step(old_u, load, residual, cv);
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture

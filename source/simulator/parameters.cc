@@ -1,0 +1,435 @@
+// The run-time parameters of the simulator: their declaration and parsing.
+
+#include <rupture/base/utilities.h>
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_nothing.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+
+
+namespace rupture
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the run: 2 (plane strain) or 3.");
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Directory for all results: log.txt, parameters.prm, "
+                      "statistics, solution.pvd with solution/*.vtu. It is "
+                      "created if missing; files of an earlier run in it are "
+                      "overwritten only once the new input has been checked.");
+    prm.declare_entry("Test mode",
+                      "false",
+                      Patterns::Bool(),
+                      "Leave out timings, iteration counts and other output "
+                      "that changes from machine to machine, so that the "
+                      "screen output can be compared in the test suite.");
+
+    prm.enter_subsection("Discretization");
+    {
+      prm.declare_entry("Initial global refinement",
+                        "0",
+                        Patterns::Integer(0, 12),
+                        "Number of times each coarse cell of the scene is "
+                        "refined (each halves the cell size).");
+      prm.declare_entry(
+        "Refinement region",
+        "0",
+        Patterns::Anything(),
+        "Cells whose centre makes this function of position (x, y and, in "
+        "3-D, z) positive are refined <Refinement region levels> more times "
+        "after the global refinement, e.g. 'x < 1000 ? 1 : 0' or "
+        "'abs(z) < 5000'. Neighbouring cells differ by at most one level; "
+        "the hanging nodes between them are constrained. The fault must be "
+        "refined alike on both sides: a region that ends on the fault is "
+        "an error.");
+      prm.declare_entry("Refinement region levels",
+                        "0",
+                        Patterns::Integer(0, 6),
+                        "How many times the cells of <Refinement region> "
+                        "are refined (each halves their size). 0 leaves the "
+                        "mesh as the global refinement made it.");
+      prm.declare_entry("Polynomial degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Degree of the FE_Q displacement elements: 1 "
+                        "(trilinear, the paper's) or 2.");
+      prm.declare_entry(
+        "Stiffness operator",
+        "matrix free",
+        Patterns::Selection("matrix free|matrix"),
+        "How products with the stiffness matrix K (residuals, energies, the "
+        "explicit step) are formed. 'matrix free' stores no K: each product "
+        "is computed cell by cell with sum factorisation (deal.II's "
+        "MatrixFree), which needs far less memory and, for an explicit "
+        "run, is the fastest. 'matrix' assembles and stores K (about 1 kB "
+        "per DoF for trilinear elements in 3-D). Implicit and quasi-static "
+        "runs with <Solver/Preconditioner> = AMG or a direct solver store "
+        "their system matrix either way; block Jacobi needs 'matrix free' "
+        "and stores no matrix at all.");
+      prm.declare_entry("Mass matrix",
+                        "consistent",
+                        Patterns::Selection("consistent|lumped"),
+                        "Mass matrix of the implicit scheme. The explicit "
+                        "scheme always uses the lumped (diagonal) mass from "
+                        "Gauss-Lobatto quadrature.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Damping");
+    {
+      prm.declare_entry("Rayleigh alpha",
+                        "0",
+                        Patterns::Double(0),
+                        "Mass-proportional coefficient (1/s) of the Rayleigh "
+                        "damping C = alpha M + beta K of the paper's eq. 13.");
+      prm.declare_entry("Rayleigh beta",
+                        "0",
+                        Patterns::Double(0),
+                        "Stiffness-proportional coefficient (s) of the "
+                        "Rayleigh damping.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    {
+      prm.declare_entry("Gravity",
+                        "0",
+                        Patterns::Double(0),
+                        "Gravitational acceleration (m/s^2), pointing in the "
+                        "negative direction of the last coordinate. The body "
+                        "force is density times gravity.");
+      prm.declare_entry("Body force",
+                        "",
+                        Patterns::Anything(),
+                        "An extra body force (N/m^3) as a function of x, y "
+                        "(, z) and t, one expression per component separated "
+                        "by ';'. Empty for none. Used for manufactured "
+                        "solutions.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial conditions");
+    {
+      prm.declare_entry("Displacement",
+                        "",
+                        Patterns::Anything(),
+                        "Initial displacement (m) as a function of x, y (, "
+                        "z), one expression per component separated by ';'. "
+                        "Empty for zero.");
+      prm.declare_entry("Velocity",
+                        "",
+                        Patterns::Anything(),
+                        "Initial velocity (m/s), in the same form. Empty for "
+                        "zero.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Verification");
+    {
+      prm.declare_entry("Exact displacement",
+                        "",
+                        Patterns::Anything(),
+                        "The exact displacement (m) as a function of x, y (, "
+                        "z) and t, if known; the L2 error against it is then "
+                        "reported at every step. Empty for none.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Output interval",
+                        "0",
+                        Patterns::Double(),
+                        "Simulated time (s) between volume outputs for "
+                        "ParaView. 0 writes every step; a negative value "
+                        "writes none.");
+      prm.declare_entry("Screen output interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Print the step line every this many steps.");
+      prm.declare_entry(
+        "Receivers",
+        "",
+        Patterns::Anything(),
+        "Off-fault stations: 'name: x, y[, z]' entries separated by ';', "
+        "e.g. 'body030st120dp000: 12000, 3000'. The displacement and "
+        "velocity there (interpolated, global components) are recorded "
+        "every step and written to <output>/<name>.dat with the columns 't "
+        "x-disp x-vel y-disp y-vel [z-disp z-vel]', in the layout of the "
+        "SCEC off-fault station files. After a loading phase the series "
+        "starts with the dynamic phase. A point outside the mesh is an "
+        "error.");
+    }
+    prm.leave_subsection();
+
+    Scene::declare_parameters(prm);
+    Fault::Fault<dim>::declare_parameters(prm);
+    Fault::FaultOutput<dim>::declare_parameters(prm);
+    Material::ElasticMaterials::declare_parameters(prm);
+    Scene::BoundaryConditions<dim>::declare_parameters(prm);
+    TimeIntegration::Parameters::declare_parameters(prm);
+    Solver::LinearSolver::declare_parameters(prm);
+    prm.enter_subsection("Solver");
+    {
+      prm.declare_entry("Newton force tolerance",
+                        "1e-8",
+                        Patterns::Double(0, 1),
+                        "Newton's method (with a fault) has converged when "
+                        "the force residual has fallen below this fraction "
+                        "of its first value (or of the load) ...");
+      prm.declare_entry("Newton displacement tolerance",
+                        "1e-6",
+                        Patterns::Double(0, 1),
+                        "... and the last displacement increment is below "
+                        "this fraction of the displacement change of the "
+                        "step (the paper's two criteria, Fig. 6), or below "
+                        "1e-11 of the whole displacement, which round-off "
+                        "no longer resolves (a quiet step after a long "
+                        "loading phase changes it by far less). A step in "
+                        "which every fault node stuck in the last two "
+                        "iterations is linear and needs only the first.");
+      prm.declare_entry("Maximum step cuts",
+                        "4",
+                        Patterns::Integer(0, 20),
+                        "When Newton's method fails in an implicit step, "
+                        "the step is redone as two half steps, recursively, "
+                        "up to this many times; then the run stops with a "
+                        "diagnosis. 0 stops at the first failure. After a "
+                        "cut, the following steps are taken as sub-steps of "
+                        "the size that converged, which double again after "
+                        "two steps without a cut; the output times stay "
+                        "those of <Time integration/Time step>.");
+      prm.declare_entry("Maximum Newton iterations",
+                        "25",
+                        Patterns::Integer(1),
+                        "A step that has not converged after this many "
+                        "Newton iterations stops the run with a diagnosis.");
+      prm.declare_entry("Print Newton iterations",
+                        "false",
+                        Patterns::Bool(),
+                        "Print every Newton iteration: the force residual "
+                        "relative to its first value, the line-search step "
+                        "length, the numbers of slipping and open fault "
+                        "nodes, and a hash of the pattern of stick, slip "
+                        "and open nodes (a repeating hash means cycling).");
+      prm.declare_entry(
+        "Newton predictor",
+        "old displacement",
+        Patterns::Selection(
+          "constant velocity|constant acceleration|old displacement"),
+        "Where Newton's method starts in an implicit dynamic step: the old "
+        "displacement moved on with the old velocity, u + dt v ('constant "
+        "velocity'), also with the old acceleration, u + dt v + dt^2/2 a "
+        "('constant acceleration'), or the old displacement itself ('old "
+        "displacement'). A sliding fault keeps sliding from a predictor "
+        "that moves on; from the old displacement every node starts stuck. "
+        "'constant velocity' needs fewer iterations (on "
+        "northeast-japan-fault-coarse.prm 6 times fewer), but where a "
+        "rupture is marginal Newton's method can converge to another "
+        "solution of the step from there: a node that would stay stuck "
+        "from the old displacement slips (doc/stability.md, Poisson ratio "
+        "0.49: final slip 0.17 m against 0.061 m, explicit 0.063 m). So "
+        "the default is 'old displacement', whose nodes slip only where "
+        "equilibrium makes them (measured in doc/performance.md). "
+        "Quasi-static steps start from the old displacement.");
+      prm.declare_entry(
+        "Limit stick crossings",
+        "true",
+        Patterns::Bool(),
+        "Newton safeguard for penalty contact: a fault node that slips and "
+        "whose full Newton update would carry it straight across the stick "
+        "region into slip again (typically reversing its slip direction: a "
+        "node coming to rest, whose penalty stiffness far exceeds the "
+        "stiffness of the body around it) gets only the part of the update "
+        "of its slip that ends inside the stick region; the other nodes get "
+        "the full update, and the line search is skipped in that "
+        "iteration. A step that fails to converge after limiting is tried "
+        "once more without the limit before it is cut (a node whose "
+        "solution does lie on the far side can cycle between the two "
+        "sides otherwise). Without it such nodes jump from one side of the stick "
+        "region to the other and only the global line search holds them, "
+        "at the price of short steps for every node: on "
+        "northeast-japan-fault-coarse.prm 6 times more Newton iterations "
+        "(doc/performance.md).");
+      prm.declare_entry(
+        "Newton stall iterations",
+        "6",
+        Patterns::Integer(0),
+        "Newton's method gives up on a step as soon as its force residual "
+        "has not fallen below half of its best earlier value within this "
+        "many iterations (it cycles, typically because a few fault nodes "
+        "switch back and forth between stick and slip), so that the step is "
+        "cut without iterating up to <Maximum Newton iterations>. Only in "
+        "implicit dynamic steps that can still be cut (not in quasi-static "
+        "steps, nor after <Maximum step cuts> cuts). 0 never gives up "
+        "early.");
+      prm.declare_entry(
+        "Newton forcing",
+        "0.1",
+        Patterns::Double(0, 0.9),
+        "Inexact Newton (matrix-free solves, <Preconditioner> = block "
+        "Jacobi, with a fault): the Krylov solve of a Newton iteration stops "
+        "at the relative residual eta_k = 0.9 (|F_k| / |F_k-1|)^2 "
+        "(Eisenstat and Walker's second choice, with their safeguard), at "
+        "most this value, at least <Linear solver tolerance>, and never "
+        "tighter than what the force tolerance of the step still needs. "
+        "Far from convergence a loose solve is enough; near it the "
+        "forcing falls and Newton converges superlinearly. 0 solves every "
+        "iteration to <Linear solver tolerance>.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    output_directory = prm.get("Output directory");
+    test_mode        = prm.get_bool("Test mode");
+
+    prm.enter_subsection("Discretization");
+    n_global_refinements = prm.get_integer("Initial global refinement");
+    n_region_refinements = prm.get_integer("Refinement region levels");
+    refinement_region =
+      Utilities::parse_function<dim>(prm.get("Refinement region"),
+                                     1,
+                                     "Discretization/Refinement region",
+                                     dim == 2 ? "x,y" : "x,y,z");
+    fe_degree             = prm.get_integer("Polynomial degree");
+    use_lumped_mass       = (prm.get("Mass matrix") == "lumped");
+    stiffness_matrix_free = (prm.get("Stiffness operator") == "matrix free");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Damping");
+    rayleigh_alpha = prm.get_double("Rayleigh alpha");
+    rayleigh_beta  = prm.get_double("Rayleigh beta");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Loads");
+    gravity        = prm.get_double("Gravity");
+    has_body_force = !dealii::Utilities::trim(prm.get("Body force")).empty();
+    body_force     = Utilities::parse_function<dim>(prm.get("Body force"),
+                                                dim,
+                                                "Loads/Body force");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Initial conditions");
+    initial_displacement =
+      Utilities::parse_function<dim>(prm.get("Displacement"),
+                                     dim,
+                                     "Initial conditions/Displacement");
+    initial_velocity =
+      Utilities::parse_function<dim>(prm.get("Velocity"),
+                                     dim,
+                                     "Initial conditions/Velocity");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Verification");
+    if (!dealii::Utilities::trim(prm.get("Exact displacement")).empty())
+      exact_displacement =
+        Utilities::parse_function<dim>(prm.get("Exact displacement"),
+                                       dim,
+                                       "Verification/Exact displacement");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_interval = prm.get_double("Output interval");
+    screen_interval = prm.get_integer("Screen output interval");
+    receivers = std::make_unique<Output::Receivers<dim>>(prm.get("Receivers"),
+                                                         communicator);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Solver");
+    newton_force_tolerance = prm.get_double("Newton force tolerance");
+    newton_displacement_tolerance =
+      prm.get_double("Newton displacement tolerance");
+    max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
+    max_step_cuts           = prm.get_integer("Maximum step cuts");
+    newton_stall_iterations = prm.get_integer("Newton stall iterations");
+    newton_forcing          = prm.get_double("Newton forcing");
+    print_newton_iterations = prm.get_bool("Print Newton iterations");
+    newton_predictor        = prm.get("Newton predictor");
+    limit_stick_crossings   = prm.get_bool("Limit stick crossings");
+    prm.leave_subsection();
+
+    time_parameters.parse_parameters(prm);
+    if (time_parameters.scheme ==
+        TimeIntegration::Scheme::explicit_central_difference)
+      use_lumped_mass = true;
+    materials.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+
+    scene = Scene::create<dim>(prm);
+    fault = Fault::Fault<dim>::create(prm);
+    if (fault)
+      {
+        fault_output = std::make_unique<Fault::FaultOutput<dim>>();
+        fault_output->parse_parameters(prm);
+      }
+    n_sides = fault ? 2 : 1;
+    if (fault)
+      {
+        const bool is_explicit =
+          (time_parameters.scheme ==
+           TimeIntegration::Scheme::explicit_central_difference);
+        AssertThrow(fault->uses_split_nodes() || !is_explicit,
+                    ExcMessage(
+                      "<Fault/Model> = penalty contact works with the "
+                      "implicit Newmark and quasi-static schemes, not with "
+                      "<Time integration/Scheme> = explicit central "
+                      "difference. For the explicit scheme choose <Fault/"
+                      "Model> = traction at split nodes."));
+        AssertThrow(!fault->uses_split_nodes() || is_explicit,
+                    ExcMessage(
+                      "<Fault/Model> = traction at split nodes works with "
+                      "<Time integration/Scheme> = explicit central "
+                      "difference only. For the implicit Newmark or "
+                      "quasi-static scheme choose <Fault/Model> = penalty "
+                      "contact."));
+        AssertThrow(!fault->uses_split_nodes() ||
+                      !time_parameters.loading_phase,
+                    ExcMessage(
+                      "<Fault/Model> = traction at split nodes cannot run "
+                      "the quasi-static <Time integration/Loading phase>: "
+                      "a static fault needs penalty contact. Disable the "
+                      "loading phase and give the prestress by <Fault/"
+                      "Initial traction>, or use <Fault/Model> = penalty "
+                      "contact with the implicit scheme."));
+      }
+    boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
+    has_absorbing = !boundary_conditions.absorbing.empty();
+    AssertThrow(!(has_absorbing && time_parameters.scheme ==
+                                     TimeIntegration::Scheme::quasi_static),
+                ExcMessage("<Boundary conditions/Absorbing> is set, but "
+                           "absorbing boundaries act on velocities and have "
+                           "no meaning in a quasi-static run. Remove them "
+                           "or choose a dynamic scheme."));
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture
