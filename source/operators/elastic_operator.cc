@@ -336,6 +336,34 @@ namespace rupture
 
 
 
+    template <int dim>
+    std::string
+    ElasticOperator<dim>::layout_summary() const
+    {
+      const auto        &mf          = impl->matrix_free;
+      const unsigned int n           = mf.n_cell_batches();
+      unsigned int       geometry[4] = {0, 0, 0, 0};
+      for (unsigned int b = 0; b < n; ++b)
+        ++geometry[std::min<unsigned int>(
+          mf.get_mapping_info().get_cell_type(b), 3)];
+      using Storage =
+        internal::MatrixFreeFunctions::DoFInfo::IndexStorageVariants;
+      const auto  &variants = mf.get_dof_info(0).index_storage_variants[2];
+      unsigned int indexed  = 0;
+      for (unsigned int b = 0; b < std::min<std::size_t>(n, variants.size());
+           ++b)
+        if (variants[b] == Storage::full || variants[b] == Storage::interleaved)
+          ++indexed;
+      return std::to_string(n) +
+             " cell batches: " + std::to_string(geometry[0]) + " Cartesian, " +
+             std::to_string(geometry[1]) + " affine, " +
+             std::to_string(geometry[2] + geometry[3]) + " general; " +
+             std::to_string(n - indexed) + " with contiguous DoFs, " +
+             std::to_string(indexed) + " indexed";
+    }
+
+
+
     template class ElasticOperator<2>;
     template class ElasticOperator<3>;
   } // namespace Operators

@@ -37,7 +37,7 @@ namespace rupture
             << dealii::Utilities::MPI::sum(
                  elastic_operator->memory_consumption(), communicator) /
                  1048576
-            << " MB\n";
+            << " MB (" << elastic_operator->layout_summary() << " on rank 0)\n";
   }
 
 

@@ -10,6 +10,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <memory>
+#include <string>
 
 namespace rupture
 {
@@ -96,6 +97,15 @@ namespace rupture
       /// Memory of the operator's own data (bytes, this rank).
       std::size_t
       memory_consumption() const;
+
+      /**
+       * How the cell batches of this rank are stored, for the screen: how
+       * many have Cartesian, affine or general geometry (one Jacobian per
+       * batch, or one per quadrature point), and how many read their DoFs
+       * contiguously or through an index list.
+       */
+      std::string
+      layout_summary() const;
 
     private:
       struct Implementation;
