@@ -5,7 +5,9 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <algorithm>
 #include <sstream>
+#include <vector>
 
 namespace rupture
 {
@@ -107,9 +109,11 @@ namespace rupture
     template <int dim>
     VolumeOutput<dim>::VolumeOutput(const std::string &output_directory,
                                     const Material::ElasticMaterials &materials,
-                                    const MPI_Comm communicator)
+                                    const unsigned int cells_per_piece,
+                                    const MPI_Comm     communicator)
       : directory(output_directory)
       , materials(materials)
+      , cells_per_piece(cells_per_piece)
       , communicator(communicator)
     {}
 
@@ -140,21 +144,101 @@ namespace rupture
             rank(cell->active_cell_index())        = my_rank;
           }
 
-      DataOut<dim> data_out;
-      data_out.attach_dof_handler(dof_handler);
-      data_out.add_data_vector(displacement, displacement_out);
-      data_out.add_data_vector(velocity, velocity_out);
-      data_out.add_data_vector(material_id, "material_id");
-      data_out.add_data_vector(rank, "mpi_rank");
-      data_out.build_patches();
+      // The cells are written in pieces of at most cells_per_piece cells,
+      // each from its own DataOut, so that the memory of a snapshot stays
+      // bounded (one DataOut of the whole mesh took about 1 kB per DoF,
+      // more than the whole run).
+      // Pieces are numbered across the ranks; with one piece per rank the
+      // files are those of DataOut::write_vtu_with_pvtu_record().
+      // The owned cells of each piece, in order, and each cell's place.
+      std::vector<std::vector<typename Triangulation<dim>::cell_iterator>>
+                                pieces;
+      std::vector<unsigned int> place(tria.n_active_cells(), 0);
+      unsigned int              n_owned = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            if (n_owned % cells_per_piece == 0)
+              pieces.emplace_back();
+            place[cell->active_cell_index()] = pieces.back().size();
+            pieces.back().push_back(cell);
+            ++n_owned;
+          }
+      const unsigned int n_pieces =
+        std::max(1u, (n_owned + cells_per_piece - 1) / cells_per_piece);
+      unsigned int pieces_so_far = 0;
+      MPI_Scan(
+        &n_pieces, &pieces_so_far, 1, MPI_UNSIGNED, MPI_SUM, communicator);
+      const unsigned int first_piece = pieces_so_far - n_pieces;
+      const unsigned int n_all_pieces =
+        dealii::Utilities::MPI::sum(n_pieces, communicator);
 
-      DataOutBase::VtkFlags flags;
-      flags.time  = time;
-      flags.cycle = step;
-      data_out.set_flags(flags);
+      std::string step_name = std::to_string(step);
+      step_name.insert(0, std::max<int>(0, 5 - int(step_name.size())), '0');
+      const std::string pvtu       = "solution_" + step_name + ".pvtu";
+      const auto        piece_name = [&](const unsigned int piece) {
+        return "solution_" + step_name + "." + std::to_string(piece) + ".vtu";
+      };
 
-      const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-        directory + "/solution/", "solution", step, communicator, 5, 0);
+      for (unsigned int piece = 0; piece < n_pieces; ++piece)
+        {
+          DataOut<dim> data_out;
+          // Walks this piece's cells only (a filter would walk every cell
+          // of every level for each piece).
+          if (piece < pieces.size())
+            {
+              const auto &cells = pieces[piece];
+              data_out.set_cell_selection(
+                [&cells](const Triangulation<dim> &) { return cells[0]; },
+                [&cells, &place](
+                  const Triangulation<dim>                         &t,
+                  const typename Triangulation<dim>::cell_iterator &cell) {
+                  const unsigned int next =
+                    place[cell->active_cell_index()] + 1;
+                  return next < cells.size() ?
+                           cells[next] :
+                           typename Triangulation<dim>::cell_iterator(t.end());
+                });
+            }
+          else
+            // No owned cells: an empty piece.
+            data_out.set_cell_selection(
+              [](const Triangulation<dim> &t) { return t.end(); },
+              [](const Triangulation<dim> &t,
+                 const typename Triangulation<dim>::cell_iterator &) {
+                return t.end();
+              });
+          data_out.attach_dof_handler(dof_handler);
+          data_out.add_data_vector(displacement, displacement_out);
+          data_out.add_data_vector(velocity, velocity_out);
+          data_out.add_data_vector(material_id, "material_id");
+          data_out.add_data_vector(rank, "mpi_rank");
+          data_out.build_patches();
+
+          DataOutBase::VtkFlags flags;
+          flags.time  = time;
+          flags.cycle = step;
+          // deal.II 9.4 compresses best by default: several times slower
+          // for files some 10 % smaller.
+          flags.compression_level = DataOutBase::VtkFlags::best_speed;
+          data_out.set_flags(flags);
+
+          std::ostringstream vtu;
+          data_out.write_vtu(vtu);
+          Utilities::write_file_atomically(directory + "/solution/" +
+                                             piece_name(first_piece + piece),
+                                           vtu.str());
+          if (my_rank == 0 && piece == 0)
+            {
+              std::vector<std::string> names;
+              for (unsigned int i = 0; i < n_all_pieces; ++i)
+                names.push_back(piece_name(i));
+              std::ostringstream record;
+              data_out.write_pvtu_record(record, names);
+              Utilities::write_file_atomically(directory + "/solution/" + pvtu,
+                                               record.str());
+            }
+        }
       records.emplace_back(time, "solution/" + pvtu);
 
       if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)

@@ -112,10 +112,8 @@ namespace rupture
       }
     MPI_Barrier(communicator);
     output_prepared = true;
-    volume_output =
-      std::make_unique<Output::VolumeOutput<dim>>(output_directory,
-                                                  materials,
-                                                  communicator);
+    volume_output   = std::make_unique<Output::VolumeOutput<dim>>(
+      output_directory, materials, cells_per_output_piece, communicator);
   }
 
 

@@ -32,6 +32,7 @@ subsection Time integration
 end
 subsection Output
   set Output interval = 0.02
+  set Cells per output piece = 3
 end
 )";
 }
@@ -77,9 +78,25 @@ main(int argc, char **argv)
   for (auto it = std::sregex_iterator(pvd.begin(), pvd.end(), dataset);
        it != std::sregex_iterator();
        ++it)
-    std::printf("  %s exists: %s\n",
-                (*it)[1].str().c_str(),
-                tests::file_exists("results/" + (*it)[1].str()) ? "yes" : "no");
+    {
+      // Each .pvtu lists its pieces (4 cells in pieces of at most 3: one
+      // piece of 3 and one of 1 on one rank; one of 2 on each of 2 ranks),
+      // and each piece exists.
+      const std::string pvtu_name = (*it)[1].str();
+      const std::string pvtu      = tests::read_file("results/" + pvtu_name);
+      const std::regex  piece("Source=\"([^\"]+\\.vtu)\"");
+      unsigned int      n_pieces = 0, n_found = 0;
+      for (auto p = std::sregex_iterator(pvtu.begin(), pvtu.end(), piece);
+           p != std::sregex_iterator();
+           ++p, ++n_pieces)
+        if (tests::file_exists("results/solution/" + (*p)[1].str()))
+          ++n_found;
+      std::printf("  %s exists: %s, %u pieces, %u of them found\n",
+                  pvtu_name.c_str(),
+                  tests::file_exists("results/" + pvtu_name) ? "yes" : "no",
+                  n_pieces,
+                  n_found);
+    }
 
   // The recorded parameters repeat the run exactly.
   const auto first = rows;

@@ -29,8 +29,14 @@ namespace rupture
     class VolumeOutput
     {
     public:
+      /**
+       * Each rank writes its cells in pieces of at most
+       * @p cells_per_piece cells (one .vtu file each, all listed in the
+       * step's .pvtu), so that the memory of a snapshot stays bounded.
+       */
       VolumeOutput(const std::string                &output_directory,
                    const Material::ElasticMaterials &materials,
+                   const unsigned int                cells_per_piece,
                    const MPI_Comm                    communicator);
 
       void
@@ -43,6 +49,7 @@ namespace rupture
     private:
       const std::string                           directory;
       const Material::ElasticMaterials           &materials;
+      const unsigned int                          cells_per_piece;
       const MPI_Comm                              communicator;
       std::vector<std::pair<double, std::string>> records;
     };

@@ -320,6 +320,7 @@ namespace rupture
     double                                             rayleigh_beta;
     double                                             gravity;
     double                                             output_interval;
+    unsigned int                                       cells_per_output_piece;
     unsigned int                                       screen_interval;
     TimeIntegration::Parameters                        time_parameters;
     /// The scheme of the phase being run.
