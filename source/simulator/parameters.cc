@@ -317,8 +317,14 @@ namespace rupture
   void
   Simulator<dim>::parse_parameters(ParameterHandler &prm)
   {
-    output_directory = prm.get("Output directory");
-    test_mode        = prm.get_bool("Test mode");
+    output_directory = dealii::Utilities::trim(prm.get("Output directory"));
+    // An empty name would put every file at the root of the file system
+    // ("/log.txt", "/solution/").
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("<Output directory> is empty. Allowed is the name "
+                           "of a directory, relative to where the program "
+                           "runs (e.g. 'output') or absolute."));
+    test_mode = prm.get_bool("Test mode");
 
     prm.enter_subsection("Discretization");
     n_global_refinements = prm.get_integer("Initial global refinement");
