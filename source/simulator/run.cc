@@ -167,10 +167,23 @@ namespace rupture
             else if (arg == "--print-parameters")
               {
                 print_format = "markdown";
-                if (i + 1 < arguments.size() &&
-                    (arguments[i + 1] == "markdown" ||
-                     arguments[i + 1] == "prm"))
-                  print_format = arguments[++i];
+                // The next word is the format unless it is an option or a
+                // parameter file.
+                if (i + 1 < arguments.size() && !arguments[i + 1].empty() &&
+                    arguments[i + 1][0] != '-' &&
+                    !(arguments[i + 1].size() > 4 &&
+                      arguments[i + 1].compare(arguments[i + 1].size() - 4,
+                                               4,
+                                               ".prm") == 0))
+                  {
+                    print_format = arguments[++i];
+                    AssertThrow(print_format == "markdown" ||
+                                  print_format == "prm",
+                                ExcMessage("The format <" + print_format +
+                                           "> of --print-parameters is "
+                                           "unknown. Allowed are 'markdown' "
+                                           "and 'prm'."));
+                  }
               }
             else if (arg == "--set")
               {
