@@ -73,16 +73,7 @@ namespace rupture
 
           if (tangent)
             {
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  {
-                    const double d =
-                      sign * pair.area * pair.trial.tangent[i][j];
-                    local_tangent(i, j)             = d;
-                    local_tangent(i, dim + j)       = -d;
-                    local_tangent(dim + i, j)       = -d;
-                    local_tangent(dim + i, dim + j) = d;
-                  }
+              pair_tangent_block(pair, sign, local_tangent);
               tangent_constraints.distribute_local_to_global(local_tangent,
                                                              dofs,
                                                              *tangent);
@@ -405,8 +396,27 @@ namespace rupture
 
     template <int dim>
     void
+    Fault<dim>::pair_tangent_block(const NodePair     &pair,
+                                   const double        factor,
+                                   FullMatrix<double> &block)
+    {
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          {
+            const double d    = factor * pair.area * pair.trial.tangent[i][j];
+            block(i, j)       = d;
+            block(i, dim + j) = -d;
+            block(dim + i, j) = -d;
+            block(dim + i, dim + j) = d;
+          }
+    }
+
+
+
+    template <int dim>
+    void
     Fault<dim>::prepare_pair_preconditioner(const VectorType &diagonal,
-                                            const VectorType &free) const
+                                            const VectorType &free)
     {
       pair_dofs.gather(diagonal.trilinos_vector()[0], pair_values[0]);
       pair_dofs.gather(free.trilinos_vector()[0], pair_values[1]);
@@ -419,16 +429,7 @@ namespace rupture
         {
           const NodePair    &pair  = pairs[k];
           const unsigned int first = n * k;
-          block                    = 0;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              {
-                const double d = pair.area * pair.trial.tangent[i][j];
-                block(i, j) += d;
-                block(i, dim + j) -= d;
-                block(dim + i, j) -= d;
-                block(dim + i, dim + j) += d;
-              }
+          pair_tangent_block(pair, 1., block);
           // Constrained DoFs: identity rows and columns.
           for (unsigned int i = 0; i < n; ++i)
             if (fs[first + i] == 0)

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <sstream>
 
 namespace rupture
 {
@@ -289,14 +290,16 @@ namespace rupture
                         "use the implicit scheme."));
       }
     const double n_steps = std::ceil(duration / time_step - 1e-9);
-    AssertThrow(n_steps >= 1 && n_steps <= 1e9,
-                ExcMessage(
-                  "The phase of " + std::to_string(duration) +
-                  " s with time steps of " + std::to_string(time_step) +
-                  " s would take " + std::to_string(n_steps) +
-                  " steps. Allowed are 1 to 1e9 steps: check <Time "
-                  "integration/End time> and <Time step> (or those of its "
-                  "<Loading phase>)."));
+    if (!(n_steps >= 1 && n_steps <= 1e9))
+      {
+        std::ostringstream message;
+        message << "The phase of " << duration << " s with time steps of "
+                << time_step << " s would take " << n_steps
+                << " steps. Allowed are 1 to 1e9 steps: check <Time "
+                   "integration/End time> and <Time step> (or those of its "
+                   "<Loading phase>).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
     time_step = duration / n_steps;
 
     if (scheme == Scheme::explicit_central_difference)

@@ -19,6 +19,48 @@
 
 namespace rupture
 {
+  namespace
+  {
+    /**
+     * The relative tolerance of the linear solve in Newton iteration @p k
+     * of an inexact Newton method: Eisenstat and Walker's choice 2,
+     * eta_k = 0.9 (|F_k| / |F_k-1|)^2 with their safeguard, at most
+     * @p cap (<Solver/Newton forcing>). @p eta carries the last value.
+     * Solving far below what the force tolerance still asks for is wasted,
+     * so the tolerance is never tighter than a hundredth of it (the last
+     * solve keeps the residual, and so the energy budget, well inside the
+     * tolerance). Once the force criterion holds, only the displacement
+     * criterion is left, and it needs a nearly exact correction: a loose
+     * one stalled the line search at 10 km cells (contrib/iteration-study),
+     * so those solves go to 1e-3.
+     */
+    double
+    forcing_tolerance(const unsigned int k,
+                      const double       norm,
+                      const double       last_norm,
+                      const double       force_goal,
+                      const double       cap,
+                      double            &eta)
+    {
+      if (k > 0)
+        {
+          const double ratio   = norm / std::max(last_norm, 1e-300);
+          const double guarded = 0.9 * eta * eta;
+          eta                  = 0.9 * ratio * ratio;
+          if (guarded > 0.1)
+            eta = std::max(eta, guarded);
+          eta = std::min(eta, cap);
+        }
+      if (norm <= force_goal)
+        return std::min(eta, 1e-3);
+      return std::max(eta,
+                      std::min(0.5,
+                               0.01 * force_goal / std::max(norm, 1e-300)));
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Simulator<dim>::assemble_contact(VectorType  &force,
@@ -86,6 +128,9 @@ namespace rupture
           }
         residual_current  = false;
         const double norm = free_residual.l2_norm();
+        // Every fault node sticks in this iterate (a collective test,
+        // done once per iteration).
+        const bool stuck = fault && fault->all_stuck();
         // Names the place and the likely cause, and stops the run.
         if (!std::isfinite(norm))
           check_finite(free_residual,
@@ -131,9 +176,8 @@ namespace rupture
                 const bool   displacement_ok =
                   increment_norm <=
                   std::max(newton_displacement_tolerance * change, round_off);
-                increment_ratio = increment_norm / std::max(change, 1e-300);
-                const bool linear =
-                  (signature == last_signature) && fault->all_stuck();
+                increment_ratio   = increment_norm / std::max(change, 1e-300);
+                const bool linear = (signature == last_signature) && stuck;
                 if (force_ok && (displacement_ok || linear))
                   break;
               }
@@ -252,36 +296,18 @@ namespace rupture
                 preconditioner_signature = signature;
               }
           }
-        double linear_tolerance = 0;
         // Where every fault node sticks the step is linear and one exact
-        // solve ends it.
-        if (fault && linear_solver.matrix_free() && newton_forcing > 0 &&
-            !fault->all_stuck())
-          {
-            if (k > 0)
-              {
-                const double ratio   = norm / std::max(last_norm, 1e-300);
-                const double guarded = 0.9 * eta * eta;
-                eta                  = 0.9 * ratio * ratio;
-                if (guarded > 0.1)
-                  eta = std::max(eta, guarded);
-                eta = std::min(eta, newton_forcing);
-              }
-            // Solving far below what the force tolerance still asks for
-            // is wasted; a last solve to a hundredth of it keeps the
-            // residual, and so the energy budget, well inside the
-            // tolerance. Once the force criterion holds, only the
-            // displacement criterion is left, and it needs a nearly exact
-            // Newton correction: a loose one stalls the line search (seen
-            // at 10 km cells in contrib/iteration-study).
-            linear_tolerance =
-              (norm > newton_force_tolerance * reference) ?
-                std::max(eta,
-                         std::min(0.5,
-                                  0.01 * newton_force_tolerance * reference /
-                                    std::max(norm, 1e-300))) :
-                std::min(eta, 1e-3);
-          }
+        // solve (tolerance 0: <Linear solver tolerance>) ends it.
+        const double linear_tolerance =
+          (fault && linear_solver.matrix_free() && newton_forcing > 0 &&
+           !stuck) ?
+            forcing_tolerance(k,
+                              norm,
+                              last_norm,
+                              newton_force_tolerance * reference,
+                              newton_forcing,
+                              eta) :
+            0.;
         last_norm = norm;
         increment = 0;
         {
@@ -303,7 +329,7 @@ namespace rupture
                 [this](const VectorType &r, VectorType &z) {
                   precondition_system(r, z);
                 },
-                !fault || fault->all_stuck(),
+                !fault || stuck,
                 increment,
                 free_residual,
                 linear_tolerance);

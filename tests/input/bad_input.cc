@@ -176,6 +176,8 @@ main(int argc, char **argv)
   check("linear solve that does not converge", {"solver_fails.prm"});
   check("refinement region that ends on the fault", {"refined_fault.prm"});
   check("refinement region that is not finite", {"refinement_region_nan.prm"});
+  check("more than 1e9 time steps",
+        {"valid.prm", "--set", "Time integration/End time=1e9"});
   check("unknown format of --print-parameters", {"--print-parameters", "json"});
   check("empty output directory", {"valid.prm", "--set", "Output directory="});
   check("block Jacobi with a direct solver",

@@ -299,7 +299,7 @@ namespace rupture
        */
       void
       prepare_pair_preconditioner(const VectorType &diagonal,
-                                  const VectorType &free) const;
+                                  const VectorType &free);
 
       /**
        * Applies the fault part of the block-Jacobi preconditioner: @p z
@@ -367,6 +367,15 @@ namespace rupture
                          const AffineConstraints<double> &constraints,
                          VectorType                      &force) const;
 
+      /**
+       * The pair's contact tangent as a 2 dim x 2 dim block on (minus,
+       * plus) DoFs, [D, -D; -D, D] with D = factor * area * tangent.
+       */
+      static void
+      pair_tangent_block(const NodePair     &pair,
+                         const double        factor,
+                         FullMatrix<double> &block);
+
       /// The imposed slip vector of a forced pair at the current time plus
       /// @p delay.
       Tensor<1, dim>
@@ -403,7 +412,7 @@ namespace rupture
       mutable std::vector<double> pair_values[4];
       // Each pair's inverted block (row-major) and the point-Jacobi factor
       // of its entries, from prepare_pair_preconditioner().
-      mutable std::vector<double> pair_block_inverses, pair_point_inverses;
+      std::vector<double> pair_block_inverses, pair_point_inverses;
       /// Fault faces of locally owned cells, as vertex keys.
       std::vector<std::vector<types::global_dof_index>> owned_faces;
       unsigned int                                      n_global_split    = 0;
