@@ -251,125 +251,14 @@ namespace rupture
       AssertThrow(dof_handler.get_fe_collection().size() == 2,
                   ExcInternalError());
       const FiniteElement<dim> &fe0 = dof_handler.get_fe(0);
-      const FiniteElement<dim> &fe1 = dof_handler.get_fe(1);
 
-      std::map<types::global_dof_index, NodePair> fault_nodes;
-      std::map<types::global_dof_index, NodePair> welded_nodes;
-      std::set<
-        std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>>
-        fault_faces;
-
-      owned_faces.clear();
-      std::vector<types::global_dof_index> dm(fe0.n_dofs_per_face()),
-        dp(fe1.n_dofs_per_face());
-      const unsigned int n_nodes           = fe0.n_dofs_per_face() / dim;
-      unsigned int       n_interface_faces = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (!cell->is_artificial() && cell->active_fe_index() == 0)
-          for (const auto f : cell->face_indices())
-            {
-              if (cell->at_boundary(f))
-                continue;
-              // Hanging nodes may lie anywhere but on the fault itself.
-              const auto neighbor = cell->neighbor(f);
-              bool       across   = false;
-              if (neighbor->has_children())
-                {
-                  for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
-                    {
-                      const auto child = cell->neighbor_child_on_subface(f, c);
-                      across           = across || (!child->is_artificial() &&
-                                          child->active_fe_index() == 1);
-                    }
-                }
-              else
-                across = (neighbor->level() != cell->level()) &&
-                         !neighbor->is_artificial() &&
-                         neighbor->active_fe_index() == 1;
-              if (across)
-                {
-                  std::ostringstream where;
-                  where << cell->face(f)->center();
-                  AssertThrow(false,
-                              ExcMessage(
-                                "The fault interface must be refined alike "
-                                "on both sides (no hanging nodes on it), but "
-                                "the cells at (" +
-                                where.str() +
-                                ") differ in size. Keep "
-                                "<Discretization/Refinement region> off the "
-                                "fault, or let it cover both sides."));
-                }
-              if (neighbor->has_children() || neighbor->is_artificial() ||
-                  neighbor->active_fe_index() != 1)
-                continue;
-              const auto       face   = cell->face(f);
-              const Point<dim> center = face->center();
-              if (cell->is_locally_owned())
-                ++n_interface_faces;
-              if (side_by_plane)
-                {
-                  const double distance = (center - plane_point) * plane_normal;
-                  std::ostringstream where;
-                  where << center;
-                  AssertThrow(std::abs(distance) <= 1e-6 * cell->diameter(),
-                              ExcMessage(
-                                "The fault plane of <Fault/Plane point> and "
-                                "<Fault/Plane normal> does not coincide with "
-                                "faces of the mesh: the interface face at (" +
-                                where.str() + ") is " +
-                                std::to_string(distance) +
-                                " m off the plane. Choose a plane through "
-                                "mesh faces, or a mesh that has faces on "
-                                "the plane."));
-                }
-              const bool is_fault = (region->value(center) != 0);
-              if (is_fault && cell->is_locally_owned())
-                fault_faces.insert({cell, f});
-
-              face->get_dof_indices(dm, 0);
-              face->get_dof_indices(dp, 1);
-              std::vector<std::array<types::global_dof_index, dim>> minus(
-                n_nodes),
-                plus(n_nodes);
-              for (unsigned int i = 0; i < dm.size(); ++i)
-                {
-                  const auto ci = fe0.face_system_to_component_index(i, f);
-                  minus[ci.second][ci.first] = dm[i];
-                  const auto cp = fe1.face_system_to_component_index(i, f);
-                  plus[cp.second][cp.first - dim] = dp[i];
-                }
-              if (is_fault && cell->is_locally_owned())
-                {
-                  std::vector<types::global_dof_index> keys;
-                  for (unsigned int v = 0;
-                       v < GeometryInfo<dim>::vertices_per_face;
-                       ++v)
-                    keys.push_back(minus[v][0]);
-                  owned_faces.push_back(keys);
-                }
-              for (unsigned int k = 0; k < n_nodes; ++k)
-                {
-                  NodePair pair;
-                  pair.minus         = minus[k];
-                  pair.plus          = plus[k];
-                  pair.shear_modulus = shear_modulus[cell->material_id()];
-                  (is_fault ? fault_nodes : welded_nodes)
-                    .emplace(pair.minus[0], pair);
-                }
-            }
-
-      // Nodes on the border of the fault region are welded.
-      for (const auto &w : welded_nodes)
-        fault_nodes.erase(w.first);
-
-      for (const auto &[key, pair] : welded_nodes)
-        for (unsigned int c = 0; c < dim; ++c)
-          if (!constraints.is_constrained(pair.plus[c]))
-            {
-              constraints.add_line(pair.plus[c]);
-              constraints.add_entry(pair.plus[c], pair.minus[c], 1.);
-            }
+      Interface interface;
+      find_interface(dof_handler, &shear_modulus, constraints, interface);
+      auto &fault_nodes                    = interface.fault_nodes;
+      auto &welded_nodes                   = interface.welded_nodes;
+      auto &fault_faces                    = interface.fault_faces;
+      owned_faces                          = std::move(interface.owned_faces);
+      const unsigned int n_interface_faces = interface.n_interface_faces;
 
       // Tributary area and normal of each node: the integral of its shape
       // function times the normal over the fault faces, with the vertex
@@ -495,6 +384,168 @@ namespace rupture
                              "plus side touches a cell of the minus side. "
                              "Check <Fault/Plus side> and its plane or "
                              "material ids."));
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::find_interface(const DoFHandler<dim>     &dof_handler,
+                               const std::vector<double> *shear_modulus,
+                               AffineConstraints<double> &constraints,
+                               Interface                 &result) const
+    {
+      const FiniteElement<dim> &fe0               = dof_handler.get_fe(0);
+      const FiniteElement<dim> &fe1               = dof_handler.get_fe(1);
+      auto                     &fault_nodes       = result.fault_nodes;
+      auto                     &welded_nodes      = result.welded_nodes;
+      unsigned int             &n_interface_faces = result.n_interface_faces;
+      std::vector<types::global_dof_index> dm(fe0.n_dofs_per_face()),
+        dp(fe1.n_dofs_per_face());
+      const unsigned int n_nodes = fe0.n_dofs_per_face() / dim;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (!cell->is_artificial() && cell->active_fe_index() == 0)
+          for (const auto f : cell->face_indices())
+            {
+              if (cell->at_boundary(f))
+                continue;
+              // Hanging nodes may lie anywhere but on the fault itself.
+              const auto neighbor = cell->neighbor(f);
+              bool       across   = false;
+              if (neighbor->has_children())
+                {
+                  for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+                    {
+                      const auto child = cell->neighbor_child_on_subface(f, c);
+                      across           = across || (!child->is_artificial() &&
+                                          child->active_fe_index() == 1);
+                    }
+                }
+              else
+                across = (neighbor->level() != cell->level()) &&
+                         !neighbor->is_artificial() &&
+                         neighbor->active_fe_index() == 1;
+              if (across)
+                {
+                  std::ostringstream where;
+                  where << cell->face(f)->center();
+                  AssertThrow(false,
+                              ExcMessage(
+                                "The fault interface must be refined alike "
+                                "on both sides (no hanging nodes on it), but "
+                                "the cells at (" +
+                                where.str() +
+                                ") differ in size. Keep "
+                                "<Discretization/Refinement region> off the "
+                                "fault, or let it cover both sides."));
+                }
+              if (neighbor->has_children() || neighbor->is_artificial() ||
+                  neighbor->active_fe_index() != 1)
+                continue;
+              const auto       face   = cell->face(f);
+              const Point<dim> center = face->center();
+              if (cell->is_locally_owned())
+                ++n_interface_faces;
+              if (side_by_plane)
+                {
+                  const double distance = (center - plane_point) * plane_normal;
+                  std::ostringstream where;
+                  where << center;
+                  AssertThrow(std::abs(distance) <= 1e-6 * cell->diameter(),
+                              ExcMessage(
+                                "The fault plane of <Fault/Plane point> and "
+                                "<Fault/Plane normal> does not coincide with "
+                                "faces of the mesh: the interface face at (" +
+                                where.str() + ") is " +
+                                std::to_string(distance) +
+                                " m off the plane. Choose a plane through "
+                                "mesh faces, or a mesh that has faces on "
+                                "the plane."));
+                }
+              const bool is_fault = (region->value(center) != 0);
+              if (is_fault && cell->is_locally_owned())
+                result.fault_faces.insert({cell, f});
+
+              face->get_dof_indices(dm, 0);
+              face->get_dof_indices(dp, 1);
+              std::vector<std::array<types::global_dof_index, dim>> minus(
+                n_nodes),
+                plus(n_nodes);
+              for (unsigned int i = 0; i < dm.size(); ++i)
+                {
+                  const auto ci = fe0.face_system_to_component_index(i, f);
+                  minus[ci.second][ci.first] = dm[i];
+                  const auto cp = fe1.face_system_to_component_index(i, f);
+                  plus[cp.second][cp.first - dim] = dp[i];
+                }
+              if (is_fault && cell->is_locally_owned())
+                {
+                  std::vector<types::global_dof_index> keys;
+                  for (unsigned int v = 0;
+                       v < GeometryInfo<dim>::vertices_per_face;
+                       ++v)
+                    keys.push_back(minus[v][0]);
+                  result.owned_faces.push_back(keys);
+                }
+              for (unsigned int k = 0; k < n_nodes; ++k)
+                {
+                  NodePair pair;
+                  pair.minus = minus[k];
+                  pair.plus  = plus[k];
+                  pair.shear_modulus =
+                    shear_modulus ? (*shear_modulus)[cell->material_id()] : 0.;
+                  (is_fault ? fault_nodes : welded_nodes)
+                    .emplace(pair.minus[0], pair);
+                }
+            }
+
+      // Nodes on the border of the fault region are welded.
+      for (const auto &w : welded_nodes)
+        fault_nodes.erase(w.first);
+
+      for (const auto &[key, pair] : welded_nodes)
+        for (unsigned int c = 0; c < dim; ++c)
+          if (!constraints.is_constrained(pair.plus[c]))
+            {
+              constraints.add_line(pair.plus[c]);
+              constraints.add_entry(pair.plus[c], pair.minus[c], 1.);
+            }
+    }
+
+
+
+    template <int dim>
+    std::vector<std::pair<std::array<types::global_dof_index, dim>,
+                          std::array<types::global_dof_index, dim>>>
+    Fault<dim>::level_interface(const DoFHandler<dim>     &dof_handler,
+                                AffineConstraints<double> &constraints) const
+    {
+      Interface interface;
+      find_interface(dof_handler, nullptr, constraints, interface);
+      const IndexSet &owned = dof_handler.locally_owned_dofs();
+      std::vector<std::pair<std::array<types::global_dof_index, dim>,
+                            std::array<types::global_dof_index, dim>>>
+        result;
+      for (const auto &[key, pair] : interface.fault_nodes)
+        if (owned.is_element(pair.minus[0]))
+          result.emplace_back(pair.minus, pair.plus);
+      return result;
+    }
+
+
+
+    template <int dim>
+    std::vector<
+      std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>>
+    Fault<dim>::pair_tangents() const
+    {
+      std::vector<
+        std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>>
+        result;
+      result.reserve(pairs.size());
+      for (const auto &pair : pairs)
+        result.emplace_back(pair.minus, pair.area * pair.trial.tangent);
+      return result;
     }
 
 

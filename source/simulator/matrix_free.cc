@@ -44,6 +44,55 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::setup_multigrid()
+  {
+    TimerOutput::Scope t(timer, "Multigrid set-up");
+    typename Operators::Multigrid<dim>::Description description;
+    description.triangulation = &triangulation;
+    description.dof_handler   = &dof_handler;
+    description.constraints   = &hanging_constraints;
+    description.fine_operator = elastic_operator.get();
+    description.fe_collection = &fe_collection;
+    description.fe_degree     = fe_degree;
+    description.materials     = &materials;
+    if (fault)
+      {
+        description.set_sides = [this](DoFHandler<dim> &level) {
+          for (const auto &cell : level.active_cell_iterators())
+            if (cell->is_locally_owned())
+              cell->set_active_fe_index(fault->side(cell));
+        };
+        description.interface = [this](const DoFHandler<dim>     &level,
+                                       AffineConstraints<double> &c) {
+          return fault->level_interface(level, c);
+        };
+      }
+    for (const auto &bc : boundary_conditions.kinematic)
+      description.kinematic_boundaries.emplace_back(bc.id, bc.components);
+    multigrid = std::make_unique<Operators::Multigrid<dim>>();
+    try
+      {
+        multigrid->reinit(description, communicator);
+      }
+    catch (const ExcMessage &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(std::string("While building the levels of "
+                                           "<Solver/Preconditioner> = "
+                                           "multigrid: ") +
+                               e.what()));
+      }
+    pcout << "   Multigrid: " << multigrid->summary() << ", "
+          << dealii::Utilities::MPI::sum(multigrid->memory_consumption(),
+                                         communicator) /
+               1048576
+          << " MB\n";
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::apply_stiffness(const VectorType &x, VectorType &y) const
   {
     if (!stiffness_matrix_free)
@@ -124,6 +173,14 @@ namespace rupture
   void
   Simulator<dim>::precondition_system(const VectorType &r, VectorType &z) const
   {
+    if (multigrid)
+      {
+        TimerOutput::Scope t(timer, "Multigrid V-cycle");
+        multigrid->vmult(r.trilinos_vector()[0],
+                         z.trilinos_vector()[0],
+                         free_dofs.trilinos_vector()[0]);
+        return;
+      }
     TimerOutput::Scope t(timer, "Block Jacobi");
     const unsigned int n  = r.locally_owned_size();
     const double      *rs = r.trilinos_vector()[0];

@@ -316,7 +316,20 @@ namespace rupture
             {
               // The contact tangent is that of the pairs' trial states, from
               // the last residual.
-              if (fault)
+              if (multigrid)
+                {
+                  TimerOutput::Scope   t(timer, "Multigrid set-up");
+                  const SystemFactors &c = system_factors;
+                  multigrid->set_operator(
+                    c.stiffness,
+                    c.mass,
+                    fault ?
+                      fault->pair_tangents() :
+                      std::vector<
+                        std::pair<std::array<types::global_dof_index, dim>,
+                                  Tensor<2, dim>>>());
+                }
+              else if (fault)
                 {
                   TimerOutput::Scope t(timer, "Block Jacobi");
                   fault->prepare_pair_preconditioner(system_diagonal,

@@ -398,6 +398,14 @@ namespace rupture
       use_lumped_mass = true;
     materials.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
+    // deal.II 9.4's coarsening sequence fails on locally refined meshes.
+    AssertThrow(!linear_solver.multigrid() || n_region_refinements == 0,
+                ExcMessage("<Solver/Preconditioner> = multigrid needs a mesh "
+                           "without regional refinement, but <Discretization/"
+                           "Refinement region levels> is " +
+                           std::to_string(n_region_refinements) +
+                           ". Set it to 0, or use <Solver/Preconditioner> = "
+                           "block Jacobi or AMG."));
 
     scene = Scene::create<dim>(prm);
     fault = Fault::Fault<dim>::create(prm);

@@ -179,10 +179,12 @@ namespace rupture
     // The matrix-free solver applies the system and the consistent mass
     // through the elastic operator instead.
     const bool matrix_free_system = linear_solver.matrix_free();
-    AssertThrow(!matrix_free_system || stiffness_matrix_free,
-                ExcMessage("<Solver/Preconditioner> = block Jacobi stores no "
-                           "matrix and needs <Discretization/Stiffness "
-                           "operator> = matrix free."));
+    AssertThrow(
+      !matrix_free_system || stiffness_matrix_free,
+      ExcMessage(
+        "<Solver/Preconditioner> = block Jacobi or multigrid stores no "
+        "matrix and needs <Discretization/Stiffness "
+        "operator> = matrix free."));
     const bool needs_system_matrix =
       (scheme != Scheme::explicit_central_difference ||
        time_parameters.loading_phase) &&
@@ -274,6 +276,11 @@ namespace rupture
           free_dofs(i) = increment_constraints.is_constrained(i) ? 0. : 1.;
         free_dofs.compress(VectorOperation::insert);
       }
+    multigrid.reset();
+    if (linear_solver.multigrid() &&
+        (scheme != Scheme::explicit_central_difference ||
+         time_parameters.loading_phase))
+      setup_multigrid();
 
     pcout << "   Degrees of freedom: " << dof_handler.n_dofs() << "\n";
     if (fault)

@@ -52,7 +52,7 @@ namespace rupture
         prm.declare_entry(
           "Preconditioner",
           "AMG",
-          Patterns::Selection("AMG|block Jacobi"),
+          Patterns::Selection("AMG|block Jacobi|multigrid"),
           "Preconditioner of the Krylov solvers. 'AMG' is Trilinos ML's "
           "algebraic multigrid on the assembled system matrix: robust for "
           "quasi-static and dynamic steps alike, but the matrix and the "
@@ -65,7 +65,15 @@ namespace rupture
           "dynamic steps of the implicit scheme at time steps near the "
           "explicit limit; in quasi-static steps its iteration count grows "
           "with the number of cells across the model (doc/performance.md). "
-          "'block Jacobi' together with a direct 'Linear solver' is an "
+          "'multigrid' stores no matrix either: a geometric multigrid "
+          "V-cycle on the p4est hierarchy of the mesh (the coarse mesh "
+          "refined globally or regionally), with Chebyshev smoothing around "
+          "the same block Jacobi on each level, the fault re-discretised on "
+          "each level and a CG solve on the coarse mesh; its iteration "
+          "count stays bounded as the mesh is refined, which quasi-static "
+          "steps need. It needs a mesh with at least one refinement level "
+          "and a fault on faces of the coarse mesh. 'block Jacobi' or "
+          "'multigrid' together with a direct 'Linear solver' is an "
           "error: the direct solvers store and factorise the matrix.");
         prm.declare_entry(
           "AMG aggregation",
@@ -139,11 +147,14 @@ namespace rupture
     LinearSolver::parse_parameters(ParameterHandler &prm)
     {
       prm.enter_subsection("Solver");
-      solver_type  = prm.get("Linear solver");
-      block_jacobi = (prm.get("Preconditioner") == "block Jacobi");
+      solver_type         = prm.get("Linear solver");
+      preconditioner_name = prm.get("Preconditioner");
+      block_jacobi        = (preconditioner_name == "block Jacobi");
+      use_multigrid       = (preconditioner_name == "multigrid");
       AssertThrow(
-        !block_jacobi || (solver_type != "direct" && solver_type != "MUMPS"),
-        ExcMessage("<Solver/Preconditioner> = block Jacobi needs a Krylov "
+        !matrix_free() || (solver_type != "direct" && solver_type != "MUMPS"),
+        ExcMessage("<Solver/Preconditioner> = " + preconditioner_name +
+                   " needs a Krylov "
                    "<Solver/Linear solver> (automatic, CG or GMRES), but "
                    "it is '" +
                    solver_type +
@@ -477,9 +488,9 @@ namespace rupture
                         const TrilinosWrappers::MPI::Vector &b,
                         const double                         tolerance)
     {
-      Assert(block_jacobi,
+      Assert(matrix_free(),
              ExcMessage("The matrix-free solve needs <Solver/Preconditioner> "
-                        "= block Jacobi."));
+                        "= block Jacobi or multigrid."));
       const double b_norm = b.l2_norm();
       AssertThrow(std::isfinite(b_norm),
                   ExcMessage("The right-hand side of the linear system is "
@@ -529,20 +540,25 @@ namespace rupture
         }
       catch (const SolverControl::NoConvergence &e)
         {
-          AssertThrow(false,
-                      ExcMessage(
-                        std::string("The matrix-free ") +
-                        (use_cg ? "CG" : "GMRES") +
-                        " solve (block Jacobi preconditioner) did not "
-                        "converge within " +
-                        std::to_string(max_iterations) +
-                        " iterations (residual reduced to " +
-                        short_number(e.last_residual / b_norm) +
-                        " of its start, wanted " + short_number(wanted) +
-                        "). Block Jacobi suits dynamic steps near the "
-                        "explicit time step; for quasi-static steps or long "
-                        "time steps use <Solver/Preconditioner> = AMG, or "
-                        "raise <Solver/Maximum linear iterations>."));
+          AssertThrow(
+            false,
+            ExcMessage(
+              std::string("The matrix-free ") + (use_cg ? "CG" : "GMRES") +
+              " solve (" + preconditioner_name +
+              " preconditioner) did not "
+              "converge within " +
+              std::to_string(max_iterations) +
+              " iterations (residual reduced to " +
+              short_number(e.last_residual / b_norm) +
+              " of its start, wanted " + short_number(wanted) + "). " +
+              (block_jacobi ? "Block Jacobi suits dynamic steps near the "
+                              "explicit time step; for quasi-static steps or "
+                              "long time steps use <Solver/Preconditioner> = "
+                              "multigrid or AMG, or raise <Solver/Maximum "
+                              "linear iterations>." :
+                              "Raise <Solver/Maximum linear iterations>, or "
+                              "check the model for a part that no boundary "
+                              "condition holds in place.")));
         }
       last_residual = control.last_value() / b_norm;
       return control.last_step();

@@ -15,6 +15,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <set>
 #include <vector>
@@ -122,6 +123,26 @@ namespace rupture
             AffineConstraints<double> &constraints,
             const std::vector<double> &shear_modulus_of_material,
             const MPI_Comm             communicator);
+
+      /**
+       * The interface of another DoFHandler on a mesh with the same sides
+       * (a coarser level of the multigrid preconditioner): adds its welding
+       * constraints to @p constraints and returns its split pairs (minus,
+       * plus DoFs) whose minus DoF of component 0 is locally owned.
+       */
+      std::vector<std::pair<std::array<types::global_dof_index, dim>,
+                            std::array<types::global_dof_index, dim>>>
+      level_interface(const DoFHandler<dim>     &dof_handler,
+                      AffineConstraints<double> &constraints) const;
+
+      /**
+       * The minus DoFs of each locally owned pair and its contact block:
+       * area times the tangent of the last assemble(), for the multigrid
+       * preconditioner.
+       */
+      std::vector<
+        std::pair<std::array<types::global_dof_index, dim>, Tensor<2, dim>>>
+      pair_tangents() const;
 
       /**
        * Add the coupling between the two nodes of each pair.
@@ -360,6 +381,30 @@ namespace rupture
 
       Point<3>
       to_3d(const Point<dim> &p) const;
+
+      /// The interface of a DoFHandler: split and welded nodes (keyed by
+      /// their minus DoF of component 0), fault faces.
+      struct Interface
+      {
+        std::map<types::global_dof_index, NodePair> fault_nodes;
+        std::map<types::global_dof_index, NodePair> welded_nodes;
+        std::set<std::pair<typename DoFHandler<dim>::active_cell_iterator,
+                           unsigned int>>
+                                                          fault_faces;
+        std::vector<std::vector<types::global_dof_index>> owned_faces;
+        unsigned int                                      n_interface_faces = 0;
+      };
+
+      /**
+       * Find the interface of @p dof_handler, weld the nodes outside the
+       * fault region (adding u+ = u- to @p constraints) and check that the
+       * fault lies on mesh faces without hanging nodes.
+       */
+      void
+      find_interface(const DoFHandler<dim>     &dof_handler,
+                     const std::vector<double> *shear_modulus,
+                     AffineConstraints<double> &constraints,
+                     Interface                 &result) const;
 
       /// Add the internal force of the trial traction of @p pair.
       void

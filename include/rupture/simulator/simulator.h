@@ -6,6 +6,7 @@
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
 #include <rupture/operators/elastic_operator.h>
+#include <rupture/operators/multigrid.h>
 #include <rupture/output/log.h>
 #include <rupture/output/receivers.h>
 #include <rupture/output/statistics.h>
@@ -244,6 +245,9 @@ namespace rupture
     /// Set up the matrix-free stiffness operator and its vectors.
     void
     setup_matrix_free_stiffness();
+    /// Build the levels of the multigrid preconditioner for the mesh.
+    void
+    setup_multigrid();
     /// Call @p action with the DoF indices, the stiffness matrix and (if
     /// @p with_mass) the consistent mass matrix of each locally owned cell.
     void
@@ -313,7 +317,10 @@ namespace rupture
     bool                                 stiffness_matrix_free = true;
     /// The matrix-free stiffness operator, if used, and the vectors that
     /// carry its argument and result.
-    std::unique_ptr<Operators::ElasticOperator<dim>>   elastic_operator;
+    std::unique_ptr<Operators::ElasticOperator<dim>> elastic_operator;
+    /// The geometric multigrid preconditioner (<Solver/Preconditioner> =
+    /// multigrid).
+    std::unique_ptr<Operators::Multigrid<dim>>         multigrid;
     mutable LinearAlgebra::distributed::Vector<double> operator_src;
     mutable LinearAlgebra::distributed::Vector<double> operator_dst;
     double                                             rayleigh_alpha;

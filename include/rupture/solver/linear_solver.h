@@ -78,7 +78,14 @@ namespace rupture
       bool
       matrix_free() const
       {
-        return block_jacobi;
+        return block_jacobi || use_multigrid;
+      }
+
+      /// <Solver/Preconditioner> = multigrid (matrix-free).
+      bool
+      multigrid() const
+      {
+        return use_multigrid;
       }
 
       /**
@@ -171,8 +178,10 @@ namespace rupture
       double       aggregation_threshold = 1e-4;
       double       relative_tolerance;
       unsigned int max_iterations;
-      bool         use_cg             = true;
-      bool         block_jacobi       = false;
+      bool         use_cg        = true;
+      bool         block_jacobi  = false;
+      bool         use_multigrid = false;
+      std::string  preconditioner_name;
       bool         use_pair_transform = true;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
       /// T (see set_fault_pairs()), or null without a penalty fault.

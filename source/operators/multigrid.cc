@@ -1,0 +1,890 @@
+// Geometric multigrid for the implicit and quasi-static system without a
+// stored matrix: levels, transfers, smoothers and the V-cycle.
+
+#include <rupture/base/sparse_gather.h>
+#include <rupture/operators/elastic_operator.h>
+#include <rupture/operators/multigrid.h>
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/distributed/repartitioning_policy_tools.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/multigrid/mg_transfer_global_coarsening.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Operators
+  {
+    namespace
+    {
+      using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+      /// Copy the owned entries of @p src into @p dst (same owned range).
+      void
+      copy_owned(const VectorType &src, VectorType &dst)
+      {
+        AssertDimension(src.locally_owned_size(), dst.locally_owned_size());
+        std::copy(src.begin(),
+                  src.begin() + src.locally_owned_size(),
+                  dst.begin());
+      }
+
+
+
+      /**
+       * The split pairs of one level with their symmetric contact blocks:
+       * the product y += T x and the pair-block Jacobi.
+       */
+      template <int dim>
+      struct PairBlocks
+      {
+        static constexpr unsigned int n = 2 * dim;
+
+        std::vector<typename Multigrid<dim>::PairDofs> pairs;
+        SparseGather                                   gather;
+        std::vector<Tensor<2, dim>>                    blocks;
+        std::vector<double>                            inverses, point_inverses;
+        mutable std::vector<double>                    values, results;
+
+        void
+        reinit(const std::vector<typename Multigrid<dim>::PairDofs> &p,
+               const IndexSet                                       &owned,
+               const MPI_Comm                                        comm)
+        {
+          pairs = p;
+          std::vector<types::global_dof_index> indices;
+          for (const auto &[minus, plus] : pairs)
+            {
+              indices.insert(indices.end(), minus.begin(), minus.end());
+              indices.insert(indices.end(), plus.begin(), plus.end());
+            }
+          gather.reinit(owned, indices, comm);
+        }
+
+        /// y += T x on owned arrays (x zero at constrained DoFs).
+        void
+        apply(const double *x, double *y) const
+        {
+          gather.gather(x, values);
+          for (unsigned int k = 0; k < pairs.size(); ++k)
+            {
+              Tensor<1, dim> jump;
+              for (unsigned int d = 0; d < dim; ++d)
+                jump[d] = values[n * k + dim + d] - values[n * k + d];
+              const Tensor<1, dim> f = blocks[k] * jump;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  values[n * k + d]       = -f[d];
+                  values[n * k + dim + d] = f[d];
+                }
+            }
+          gather.scatter_add(values, y);
+        }
+
+        /// Invert each pair's block diag + [D, -D; -D, D].
+        void
+        prepare(const double *diagonal, const double *free)
+        {
+          std::vector<double> ds, fs;
+          gather.gather(diagonal, ds);
+          gather.gather(free, fs);
+          inverses.resize(pairs.size() * n * n);
+          point_inverses.resize(pairs.size() * n);
+          FullMatrix<double> block(n, n), inverse(n, n);
+          for (unsigned int k = 0; k < pairs.size(); ++k)
+            {
+              const unsigned int first = n * k;
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  {
+                    const double d          = blocks[k][i][j];
+                    block(i, j)             = d;
+                    block(i, dim + j)       = -d;
+                    block(dim + i, j)       = -d;
+                    block(dim + i, dim + j) = d;
+                  }
+              for (unsigned int i = 0; i < n; ++i)
+                if (fs[first + i] == 0)
+                  for (unsigned int j = 0; j < n; ++j)
+                    block(i, j) = block(j, i) = 0;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const bool   is_free = (fs[first + i] != 0);
+                  const double d       = ds[first + i];
+                  block(i, i) += (is_free ? d : 1);
+                  point_inverses[first + i] = (is_free && d > 0) ? 1 / d : 1;
+                }
+              inverse.invert(block);
+              std::copy(&inverse(0, 0),
+                        &inverse(0, 0) + n * n,
+                        inverses.begin() + n * first);
+            }
+        }
+
+        /// z holds r / diag: replace it at the pairs by the blocks'
+        /// solutions.
+        void
+        precondition(const double *r, double *z) const
+        {
+          gather.gather(r, values);
+          results.resize(values.size());
+          for (unsigned int k = 0; k < pairs.size(); ++k)
+            {
+              const unsigned int first   = n * k;
+              const double      *inverse = inverses.data() + n * first;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  double solution = 0;
+                  for (unsigned int j = 0; j < n; ++j)
+                    solution += inverse[i * n + j] * values[first + j];
+                  results[first + i] =
+                    solution - point_inverses[first + i] * values[first + i];
+                }
+            }
+          gather.scatter_add(results, z);
+        }
+      };
+
+
+
+      /**
+       * Prolongation from a coarse level to the next finer one and its
+       * transpose, cell by cell. Each locally owned coarse cell knows its
+       * children on the fine mesh (the first child is owned by the same rank,
+       * the others are ghosts at least), or itself where the mesh did not
+       * change.
+       */
+      struct Transfer
+      {
+        struct Block
+        {
+          unsigned int              coarse_first, fine_first, n_dofs;
+          const FullMatrix<double> *matrix;
+        };
+        std::vector<Block>        blocks;
+        std::vector<unsigned int> coarse_dofs, fine_dofs;
+        std::shared_ptr<const Utilities::MPI::Partitioner> coarse_relevant,
+          fine_relevant;
+        VectorType         weights;
+        mutable VectorType coarse_ghosted, fine_ghosted;
+        /// The coarse level's hanging-node and welding constraints in
+        /// local indices: the prolongation first gives constrained coarse
+        /// DoFs their values, the restriction ends with the transpose.
+        std::vector<
+          std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
+          coarse_lines;
+
+        void
+        distribute_coarse() const
+        {
+          for (const auto &[i, entries] : coarse_lines)
+            {
+              double value = 0;
+              for (const auto &[j, w] : entries)
+                value += w * coarse_ghosted.local_element(j);
+              coarse_ghosted.local_element(i) = value;
+            }
+        }
+
+        void
+        condense_coarse() const
+        {
+          for (auto line = coarse_lines.rbegin(); line != coarse_lines.rend();
+               ++line)
+            {
+              const double value = coarse_ghosted.local_element(line->first);
+              coarse_ghosted.local_element(line->first) = 0;
+              for (const auto &[j, w] : line->second)
+                coarse_ghosted.local_element(j) += w * value;
+            }
+        }
+
+        /// fine = P coarse.
+        void
+        prolongate(const VectorType &coarse, VectorType &fine) const
+        {
+          coarse_ghosted.zero_out_ghost_values();
+          copy_owned(coarse, coarse_ghosted);
+          coarse_ghosted.update_ghost_values();
+          distribute_coarse();
+          fine_ghosted = 0;
+          for (const Block &b : blocks)
+            for (unsigned int i = 0; i < b.n_dofs; ++i)
+              {
+                double             value = 0;
+                const unsigned int fi    = fine_dofs[b.fine_first + i];
+                for (unsigned int j = 0; j < b.n_dofs; ++j)
+                  value +=
+                    (*b.matrix)(i, j) * coarse_ghosted.local_element(
+                                          coarse_dofs[b.coarse_first + j]);
+                fine_ghosted.local_element(fi) +=
+                  weights.local_element(fi) * value;
+              }
+          fine_ghosted.compress(VectorOperation::add);
+          copy_owned(fine_ghosted, fine);
+        }
+
+        /// coarse = P^T fine.
+        void restrict(const VectorType &fine, VectorType &coarse) const
+        {
+          fine_ghosted.zero_out_ghost_values();
+          copy_owned(fine, fine_ghosted);
+          fine_ghosted.update_ghost_values();
+          coarse_ghosted = 0;
+          for (const Block &b : blocks)
+            for (unsigned int i = 0; i < b.n_dofs; ++i)
+              {
+                const unsigned int fi = fine_dofs[b.fine_first + i];
+                const double       value =
+                  weights.local_element(fi) * fine_ghosted.local_element(fi);
+                if (value != 0)
+                  for (unsigned int j = 0; j < b.n_dofs; ++j)
+                    coarse_ghosted.local_element(
+                      coarse_dofs[b.coarse_first + j]) +=
+                      (*b.matrix)(i, j) * value;
+              }
+          condense_coarse();
+          coarse_ghosted.compress(VectorOperation::add);
+          copy_owned(coarse_ghosted, coarse);
+        }
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    struct Multigrid<dim>::Implementation
+    {
+      struct Level
+      {
+        std::shared_ptr<const Triangulation<dim>> triangulation;
+        std::unique_ptr<DoFHandler<dim>>          own_dof_handler;
+        const DoFHandler<dim>                    *dof_handler = nullptr;
+        AffineConstraints<double>                 constraints;
+        std::unique_ptr<ElasticOperator<dim>>     own_operator;
+        const ElasticOperator<dim>               *op = nullptr;
+        std::shared_ptr<const Utilities::MPI::Partitioner> relevant;
+        PairBlocks<dim>                                    pair_blocks;
+        VectorType                  free, diagonal_k, diagonal_m, diagonal;
+        std::array<VectorType, dim> tangent;
+        double                      lambda_max = 2;
+        mutable VectorType          x, b, r, d, t, masked;
+      };
+
+      MPI_Comm                                     communicator;
+      Description                                  description;
+      std::vector<std::unique_ptr<Level>>          levels;
+      std::vector<Transfer>                        transfers;
+      std::vector<std::vector<FullMatrix<double>>> prolongation;
+      double                                       stiffness_factor  = 1;
+      double                                       mass_factor       = 0;
+      mutable unsigned int                         coarse_iterations = 0;
+      mutable unsigned int                         n_coarse_solves   = 0;
+
+      void
+      setup_level(Level &level, const bool finest);
+
+      void
+      setup_transfer(const Level &coarse, const Level &fine, Transfer &t);
+
+      /// dst = A_l src.
+      void
+      apply(const unsigned int l, VectorType &dst, const VectorType &src) const;
+
+      /// dst = P_l^-1 src (pair-block Jacobi).
+      void
+      precondition(const unsigned int l,
+                   VectorType        &dst,
+                   const VectorType  &src) const;
+
+      /// Chebyshev smoothing of A_l x = b, from x = 0 if @p from_zero.
+      void
+      smooth(const unsigned int l, const bool from_zero) const;
+
+      void
+      vcycle(const unsigned int l) const;
+    };
+
+
+
+    template <int dim>
+    Multigrid<dim>::Multigrid()
+      : impl(std::make_unique<Implementation>())
+    {}
+
+
+
+    template <int dim>
+    Multigrid<dim>::~Multigrid() = default;
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::Implementation::setup_level(Level &level, const bool finest)
+    {
+      const DoFHandler<dim> &dh = *level.dof_handler;
+      IndexSet               relevant_dofs;
+      DoFTools::extract_locally_relevant_dofs(dh, relevant_dofs);
+      const IndexSet &owned = dh.locally_owned_dofs();
+      level.relevant =
+        std::make_shared<Utilities::MPI::Partitioner>(owned,
+                                                      relevant_dofs,
+                                                      communicator);
+
+      // Hanging nodes and the fault's welding, as on the fine mesh; the
+      // pairs of the fine mesh are those of the simulator's fault (its
+      // constraints are given).
+      AffineConstraints<double>  scratch;
+      AffineConstraints<double> &constraints =
+        finest ? scratch : level.constraints;
+      constraints.reinit(relevant_dofs);
+      if (!finest)
+        DoFTools::make_hanging_node_constraints(dh, constraints);
+      std::vector<PairDofs> pairs;
+      if (description.interface)
+        pairs = description.interface(dh, constraints);
+      constraints.close();
+      level.pair_blocks.reinit(pairs, owned, communicator);
+
+      if (!finest)
+        {
+          level.own_operator = std::make_unique<ElasticOperator<dim>>();
+          level.own_operator->reinit(MappingQ1<dim>(),
+                                     dh,
+                                     level.constraints,
+                                     *description.materials,
+                                     description.fe_degree);
+          level.op = level.own_operator.get();
+        }
+      for (VectorType *v : {&level.free,
+                            &level.x,
+                            &level.b,
+                            &level.r,
+                            &level.d,
+                            &level.t,
+                            &level.masked,
+                            &level.diagonal})
+        level.op->initialize_dof_vector(*v);
+      for (auto &v : level.tangent)
+        level.op->initialize_dof_vector(v);
+      level.op->compute_diagonals(level.diagonal_k, level.diagonal_m);
+
+      // Free DoFs: neither constrained nor on a kinematic boundary.
+      const AffineConstraints<double> &c =
+        finest ? *description.constraints : level.constraints;
+      IndexSet           fixed(dh.n_dofs());
+      const unsigned int n_components = dh.get_fe_collection().n_components();
+      for (const auto &[id, components] : description.kinematic_boundaries)
+        {
+          ComponentMask mask(n_components, false);
+          for (unsigned int k = 0; k < n_components; ++k)
+            mask.set(k, components[k % dim]);
+          fixed.add_indices(DoFTools::extract_boundary_dofs(dh, mask, {id}));
+        }
+      unsigned int i = 0;
+      for (const auto dof : owned)
+        level.free.local_element(i++) =
+          (c.is_constrained(dof) || fixed.is_element(dof)) ? 0. : 1.;
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::Implementation::setup_transfer(const Level &coarse,
+                                                   const Level &fine,
+                                                   Transfer    &t)
+    {
+      const DoFHandler<dim>    &cdh   = *coarse.dof_handler;
+      const DoFHandler<dim>    &fdh   = *fine.dof_handler;
+      const Triangulation<dim> &ftria = fdh.get_triangulation();
+      t.coarse_relevant               = coarse.relevant;
+      t.fine_relevant                 = fine.relevant;
+      t.weights.reinit(fine.relevant);
+      t.coarse_ghosted.reinit(coarse.relevant);
+      t.fine_ghosted.reinit(fine.relevant);
+      const unsigned int n_children = GeometryInfo<dim>::max_children_per_cell;
+
+      std::vector<types::global_dof_index> cd, fd;
+      for (const auto &cell : cdh.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const unsigned int fe_index = cell->active_fe_index();
+            cd.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(cd);
+            const unsigned int coarse_first = t.coarse_dofs.size();
+            for (const auto g : cd)
+              t.coarse_dofs.push_back(coarse.relevant->global_to_local(g));
+            const auto tria_cell = ftria.create_cell_iterator(cell->id());
+            const typename DoFHandler<dim>::cell_iterator fine_cell(
+              &ftria, tria_cell->level(), tria_cell->index(), &fdh);
+            const auto add =
+              [&](const typename DoFHandler<dim>::cell_iterator &fc,
+                  const FullMatrix<double>                      &matrix) {
+                AssertThrow(fc->is_active() && !fc->is_artificial() &&
+                              fc->active_fe_index() == fe_index,
+                            ExcInternalError());
+                fd.resize(cd.size());
+                fc->get_dof_indices(fd);
+                t.blocks.push_back(
+                  {coarse_first,
+                   static_cast<unsigned int>(t.fine_dofs.size()),
+                   static_cast<unsigned int>(cd.size()),
+                   &matrix});
+                for (const auto g : fd)
+                  t.fine_dofs.push_back(fine.relevant->global_to_local(g));
+              };
+            if (fine_cell->is_active())
+              add(fine_cell, prolongation[fe_index][n_children]);
+            else
+              for (unsigned int c = 0; c < n_children; ++c)
+                add(fine_cell->child(c), prolongation[fe_index][c]);
+          }
+
+      // Each fine DoF gets the mean of what its cells give it.
+      t.weights = 0;
+      for (const auto &b : t.blocks)
+        for (unsigned int i = 0; i < b.n_dofs; ++i)
+          t.weights.local_element(t.fine_dofs[b.fine_first + i]) += 1;
+      t.weights.compress(VectorOperation::add);
+      for (unsigned int i = 0; i < t.weights.locally_owned_size(); ++i)
+        if (t.weights.local_element(i) > 0)
+          t.weights.local_element(i) = 1 / t.weights.local_element(i);
+      t.weights.update_ghost_values();
+
+      for (const auto &line : coarse.constraints.get_lines())
+        if (coarse.relevant->in_local_range(line.index) ||
+            coarse.relevant->is_ghost_entry(line.index))
+          {
+            std::vector<std::pair<unsigned int, double>> entries;
+            for (const auto &[j, w] : line.entries)
+              entries.emplace_back(coarse.relevant->global_to_local(j), w);
+            t.coarse_lines.emplace_back(
+              coarse.relevant->global_to_local(line.index), entries);
+          }
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::Implementation::apply(const unsigned int l,
+                                          VectorType        &dst,
+                                          const VectorType  &src) const
+    {
+      const Level       &level = *levels[l];
+      const unsigned int n     = src.locally_owned_size();
+      for (unsigned int i = 0; i < n; ++i)
+        level.masked.local_element(i) =
+          src.local_element(i) * level.free.local_element(i);
+      level.op->vmult(dst, level.masked, stiffness_factor, mass_factor);
+      level.pair_blocks.apply(level.masked.begin(), dst.begin());
+      for (unsigned int i = 0; i < n; ++i)
+        if (level.free.local_element(i) == 0)
+          dst.local_element(i) = src.local_element(i);
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::Implementation::precondition(const unsigned int l,
+                                                 VectorType        &dst,
+                                                 const VectorType  &src) const
+    {
+      const Level       &level = *levels[l];
+      const unsigned int n     = src.locally_owned_size();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double d       = level.diagonal.local_element(i);
+          dst.local_element(i) = (level.free.local_element(i) != 0 && d > 0) ?
+                                   src.local_element(i) / d :
+                                   src.local_element(i);
+        }
+      level.pair_blocks.precondition(src.begin(), dst.begin());
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::Implementation::smooth(const unsigned int l,
+                                           const bool         from_zero) const
+    {
+      const Level &level = *levels[l];
+      // Chebyshev iteration on the upper part of the spectrum of P^-1 A.
+      const double upper = 1.2 * level.lambda_max;
+      const double lower = upper / 15.;
+      const double theta = (upper + lower) / 2, delta = (upper - lower) / 2;
+      const double sigma = theta / delta;
+      double       rho   = 1 / sigma;
+      if (from_zero)
+        {
+          level.x = 0;
+          level.r = level.b;
+        }
+      else
+        {
+          apply(l, level.t, level.x);
+          level.r = level.b;
+          level.r -= level.t;
+        }
+      precondition(l, level.d, level.r);
+      level.d *= 1 / theta;
+      for (unsigned int k = 0; k < description.smoothing_degree; ++k)
+        {
+          level.x += level.d;
+          if (k + 1 == description.smoothing_degree)
+            break;
+          apply(l, level.t, level.d);
+          level.r -= level.t;
+          const double rho_next = 1 / (2 * sigma - rho);
+          precondition(l, level.t, level.r);
+          level.d.sadd(rho_next * rho, 2 * rho_next / delta, level.t);
+          rho = rho_next;
+        }
+    }
+
+
+
+    namespace
+    {
+      /// deal.II's solvers call vmult() on the operator and preconditioner.
+      struct LevelFunction
+      {
+        std::function<void(VectorType &, const VectorType &)> function;
+        void
+        vmult(VectorType &dst, const VectorType &src) const
+        {
+          function(dst, src);
+        }
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::Implementation::vcycle(const unsigned int l) const
+    {
+      const Level &level = *levels[l];
+      if (l == 0)
+        {
+          const LevelFunction a{
+            [this](VectorType &d, const VectorType &s) { apply(0, d, s); }};
+          const LevelFunction  p{[this](VectorType &d, const VectorType &s) {
+            precondition(0, d, s);
+          }};
+          ReductionControl     control(10000, 1e-300, 1e-8);
+          SolverCG<VectorType> cg(control);
+          level.x = 0;
+          try
+            {
+              cg.solve(a, level.x, level.b, p);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {
+              // A preconditioner needs no exact coarse solve.
+            }
+          coarse_iterations += control.last_step();
+          ++n_coarse_solves;
+          return;
+        }
+      const Level &coarse = *levels[l - 1];
+      smooth(l, true);
+      apply(l, level.t, level.x);
+      level.r = level.b;
+      level.r -= level.t;
+      transfers[l - 1].restrict(level.r, coarse.b);
+      for (unsigned int i = 0; i < coarse.b.locally_owned_size(); ++i)
+        coarse.b.local_element(i) *= coarse.free.local_element(i);
+      vcycle(l - 1);
+      transfers[l - 1].prolongate(coarse.x, level.t);
+      for (unsigned int i = 0; i < level.t.locally_owned_size(); ++i)
+        level.t.local_element(i) *= level.free.local_element(i);
+      level.x += level.t;
+      smooth(l, false);
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::reinit(const Description &description,
+                           const MPI_Comm     communicator)
+    {
+      Implementation &m = *impl;
+      m.communicator    = communicator;
+      m.description     = description;
+      m.levels.clear();
+      m.transfers.clear();
+
+      // The prolongation of each side's element: FE_Q's on the side's own
+      // components, for each child, and the identity where a cell stays.
+      const hp::FECollection<dim> &fes = *description.fe_collection;
+      const FE_Q<dim>              q(description.fe_degree);
+      const unsigned int n_children = GeometryInfo<dim>::max_children_per_cell;
+      m.prolongation.assign(fes.size(), {});
+      for (unsigned int s = 0; s < fes.size(); ++s)
+        {
+          const FiniteElement<dim> &fe = fes[s];
+          const unsigned int        n  = fe.n_dofs_per_cell();
+          for (unsigned int c = 0; c < n_children; ++c)
+            {
+              const FullMatrix<double> &pq = q.get_prolongation_matrix(c);
+              FullMatrix<double>        p(n, n);
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  {
+                    const auto ci = fe.system_to_component_index(i);
+                    const auto cj = fe.system_to_component_index(j);
+                    if (ci.first == cj.first)
+                      p(i, j) = pq(ci.second, cj.second);
+                  }
+              m.prolongation[s].push_back(p);
+            }
+          FullMatrix<double> identity(n, n);
+          for (unsigned int i = 0; i < n; ++i)
+            identity(i, i) = 1;
+          m.prolongation[s].push_back(identity);
+        }
+
+      const auto triangulations =
+        MGTransferGlobalCoarseningTools::create_geometric_coarsening_sequence(
+          *description.triangulation,
+          RepartitioningPolicyTools::FirstChildPolicy<dim>(
+            *description.triangulation));
+      const unsigned int n_levels = triangulations.size();
+      // A coarse cell takes the material of its first child: scenes may set
+      // the materials of the active cells only.
+      for (unsigned int l = n_levels - 1; l > 0; --l)
+        {
+          const Triangulation<dim> &finer = (l + 1 == n_levels) ?
+                                              *description.triangulation :
+                                              *triangulations[l];
+          for (const auto &cell :
+               triangulations[l - 1]->active_cell_iterators())
+            if (cell->is_locally_owned())
+              {
+                auto fine_cell = finer.create_cell_iterator(cell->id());
+                if (fine_cell->has_children())
+                  fine_cell = fine_cell->child(0);
+                cell->set_material_id(fine_cell->material_id());
+              }
+        }
+      for (unsigned int l = 0; l < n_levels; ++l)
+        {
+          auto       level = std::make_unique<typename Implementation::Level>();
+          const bool finest = (l + 1 == n_levels);
+          if (finest)
+            {
+              level->dof_handler = description.dof_handler;
+              level->op          = description.fine_operator;
+            }
+          else
+            {
+              level->triangulation = triangulations[l];
+              level->own_dof_handler =
+                std::make_unique<DoFHandler<dim>>(*level->triangulation);
+              if (description.set_sides)
+                description.set_sides(*level->own_dof_handler);
+              level->own_dof_handler->distribute_dofs(fes);
+              level->dof_handler = level->own_dof_handler.get();
+            }
+          m.setup_level(*level, finest);
+          m.levels.push_back(std::move(level));
+        }
+      m.transfers.resize(n_levels - 1);
+      for (unsigned int l = 1; l < n_levels; ++l)
+        m.setup_transfer(*m.levels[l - 1], *m.levels[l], m.transfers[l - 1]);
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::set_operator(
+      const double                                  stiffness_factor,
+      const double                                  mass_factor,
+      const std::vector<std::pair<std::array<types::global_dof_index, dim>,
+                                  Tensor<2, dim>>> &pair_tangents)
+    {
+      Implementation &m           = *impl;
+      m.stiffness_factor          = stiffness_factor;
+      m.mass_factor               = mass_factor;
+      const unsigned int n_levels = m.levels.size();
+
+      // The fine pairs' blocks, symmetric and positive semi-definite (the
+      // slipping pairs' tangent is not), restricted level by level.
+      auto &fine = *m.levels.back();
+      for (auto &v : fine.tangent)
+        v = 0;
+      std::map<types::global_dof_index, Tensor<2, dim>> exact;
+      for (const auto &[minus, tangent] : pair_tangents)
+        {
+          exact[minus[0]]                   = tangent;
+          const SymmetricTensor<2, dim> sym = symmetrize(tangent);
+          const auto                    eigen =
+            eigenvectors(sym, SymmetricTensorEigenvectorMethod::jacobi);
+          Tensor<2, dim> block;
+          for (const auto &[value, vector] : eigen)
+            if (value > 0)
+              block += value * outer_product(vector, vector);
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int d = 0; d < dim; ++d)
+              fine.tangent[d].local_element(
+                fine.tangent[d].get_partitioner()->global_to_local(minus[c])) =
+                block[c][d];
+        }
+      for (unsigned int l = n_levels - 1; l > 0; --l)
+        for (unsigned int d = 0; d < dim; ++d)
+          m.transfers[l - 1].restrict(m.levels[l]->tangent[d],
+                                      m.levels[l - 1]->tangent[d]);
+
+      for (unsigned int l = 0; l < n_levels; ++l)
+        {
+          auto &level = *m.levels[l];
+          auto &pb    = level.pair_blocks;
+          pb.blocks.assign(pb.pairs.size(), Tensor<2, dim>());
+          std::vector<double> values;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              pb.gather.gather(level.tangent[d].begin(), values);
+              for (unsigned int k = 0; k < pb.pairs.size(); ++k)
+                for (unsigned int c = 0; c < dim; ++c)
+                  pb.blocks[k][c][d] = values[2 * dim * k + c];
+            }
+          for (auto &b : pb.blocks)
+            b = Tensor<2, dim>(symmetrize(b));
+          level.diagonal.equ(stiffness_factor, level.diagonal_k);
+          if (mass_factor != 0)
+            level.diagonal.add(mass_factor, level.diagonal_m);
+          pb.prepare(level.diagonal.begin(), level.free.begin());
+
+          if (l == 0)
+            continue;
+          // The largest eigenvalue of P^-1 A, from a few CG iterations.
+          const auto &partitioner = level.b.get_partitioner();
+          for (unsigned int i = 0; i < level.b.locally_owned_size(); ++i)
+            level.b.local_element(i) =
+              level.free.local_element(i) *
+              (1. + 0.1 * (partitioner->local_to_global(i) % 11));
+          const LevelFunction a{
+            [&m, l](VectorType &d, const VectorType &s) { m.apply(l, d, s); }};
+          const LevelFunction    p{[&m, l](VectorType &d, const VectorType &s) {
+            m.precondition(l, d, s);
+          }};
+          IterationNumberControl control(12, 1e-300);
+          SolverCG<VectorType>   cg(control);
+          double                 lambda = 0;
+          cg.connect_eigenvalues_slot(
+            [&lambda](const std::vector<double> &eigenvalues) {
+              if (!eigenvalues.empty())
+                lambda =
+                  *std::max_element(eigenvalues.begin(), eigenvalues.end());
+            });
+          level.x = 0;
+          try
+            {
+              cg.solve(a, level.x, level.b, p);
+            }
+          catch (const SolverControl::NoConvergence &)
+            {}
+          level.lambda_max = (lambda > 0 ? lambda : 2.);
+
+          // The fine level smooths with the pairs' own (nonsymmetric)
+          // tangent: slipping and weakening pairs are what the symmetric
+          // version misses most.
+          if (l + 1 == n_levels)
+            {
+              for (unsigned int k = 0; k < pb.pairs.size(); ++k)
+                {
+                  const auto p = exact.find(pb.pairs[k].first[0]);
+                  AssertThrow(p != exact.end(), ExcInternalError());
+                  pb.blocks[k] = p->second;
+                }
+              pb.prepare(level.diagonal.begin(), level.free.begin());
+            }
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Multigrid<dim>::vmult(const double *r, double *z, const double *free) const
+    {
+      const Implementation &m    = *impl;
+      const auto           &fine = *m.levels.back();
+      const unsigned int    n    = fine.b.locally_owned_size();
+      for (unsigned int i = 0; i < n; ++i)
+        fine.b.local_element(i) = (free[i] != 0 ? r[i] : 0.);
+      m.vcycle(m.levels.size() - 1);
+      for (unsigned int i = 0; i < n; ++i)
+        z[i] = (free[i] != 0 ? fine.x.local_element(i) : r[i]);
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Multigrid<dim>::n_levels() const
+    {
+      return impl->levels.size();
+    }
+
+
+
+    template <int dim>
+    std::string
+    Multigrid<dim>::summary() const
+    {
+      std::ostringstream s;
+      s << impl->levels.size() << " levels of";
+      for (const auto &level : impl->levels)
+        s << " " << level->dof_handler->n_dofs();
+      s << " DoFs";
+      if (impl->n_coarse_solves > 0)
+        s << ", " << impl->coarse_iterations / impl->n_coarse_solves
+          << " CG iterations per coarse solve";
+      return s.str();
+    }
+
+
+
+    template <int dim>
+    std::size_t
+    Multigrid<dim>::memory_consumption() const
+    {
+      std::size_t bytes = 0;
+      for (const auto &level : impl->levels)
+        {
+          if (level->own_operator)
+            bytes += level->own_operator->memory_consumption() +
+                     level->own_dof_handler->memory_consumption() +
+                     level->constraints.memory_consumption();
+          bytes += (12 + dim) * level->free.memory_consumption();
+        }
+      for (const auto &t : impl->transfers)
+        bytes +=
+          (t.coarse_dofs.size() + t.fine_dofs.size()) * sizeof(unsigned int) +
+          t.blocks.size() * sizeof(Transfer::Block);
+      return bytes;
+    }
+  } // namespace Operators
+} // namespace rupture
+
+
+template class rupture::Operators::Multigrid<2>;
+template class rupture::Operators::Multigrid<3>;
