@@ -82,11 +82,14 @@ namespace rupture
                                            "multigrid: ") +
                                e.what()));
       }
-    pcout << "   Multigrid: " << multigrid->summary() << ", "
-          << dealii::Utilities::MPI::sum(multigrid->memory_consumption(),
-                                         communicator) /
-               1048576
-          << " MB\n";
+    pcout << "   Multigrid: " << multigrid->summary();
+    if (!test_mode)
+      pcout << ", "
+            << dealii::Utilities::MPI::sum(multigrid->memory_consumption(),
+                                           communicator) /
+                 1048576
+            << " MB";
+    pcout << "\n";
   }
 
 

@@ -299,14 +299,17 @@ namespace rupture
         "0.1",
         Patterns::Double(0, 0.9),
         "Inexact Newton (matrix-free solves, <Preconditioner> = block "
-        "Jacobi, with a fault): the Krylov solve of a Newton iteration stops "
+        "Jacobi or multigrid, with a fault): the Krylov solve of a Newton iteration stops "
         "at the relative residual eta_k = 0.9 (|F_k| / |F_k-1|)^2 "
         "(Eisenstat and Walker's second choice, with their safeguard), at "
         "most this value, at least <Linear solver tolerance>, and never "
         "tighter than what the force tolerance of the step still needs. "
         "Far from convergence a loose solve is enough; near it the "
         "forcing falls and Newton converges superlinearly. 0 solves every "
-        "iteration to <Linear solver tolerance>.");
+        "iteration to <Linear solver tolerance>. With <Preconditioner> = "
+        "multigrid the cap is at most 1e-3: its first iteration or two "
+        "already meet a loose tolerance, with directions that lead Newton "
+        "astray at the contact.");
     }
     prm.leave_subsection();
   }

@@ -257,6 +257,20 @@ namespace rupture
     pcout << "   Energy balance error below " << tolerance
           << " of the energy scale: "
           << (std::abs(last[8]) < tolerance * scale ? "yes" : "no") << "\n";
+    if (multigrid)
+      {
+        // What multigrid is for: iteration counts that stay bounded.
+        pcout << "   Multigrid: Krylov iterations per linear solve";
+        const char *names[] = {"quasi-static", "dynamic"};
+        for (unsigned int p = 0; p < 2; ++p)
+          if (n_linear_solves[p] > 0)
+            pcout << " " << std::fixed << std::setprecision(1)
+                  << double(total_linear_iterations[p]) / n_linear_solves[p]
+                  << " (" << names[p] << ")" << std::defaultfloat;
+        pcout << "\n";
+        if (!test_mode)
+          pcout << "   Multigrid: " << multigrid->summary() << "\n";
+      }
     if (!test_mode)
       {
         pcout << "   Energy balance error " << last[8] << " J\n";

@@ -522,10 +522,30 @@ namespace rupture
       SolverControl control(max_iterations, wanted * b_norm);
       try
         {
-          if (use_cg)
+          // The multigrid V-cycle ends in an iterative coarse solve, so it
+          // is not exactly linear: the flexible variants keep each
+          // preconditioned vector instead of applying the preconditioner to
+          // a combination of them (with the stiff penalty, GMRES's final
+          // combination cancels so strongly that the plain variant's
+          // result missed its residual by orders of magnitude).
+          if (use_cg && use_multigrid)
+            {
+              dealii::SolverFlexibleCG<TrilinosWrappers::MPI::Vector> cg(
+                control);
+              cg.solve(a, x, b, p);
+            }
+          else if (use_cg)
             {
               dealii::SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
               cg.solve(a, x, b, p);
+            }
+          else if (use_multigrid)
+            {
+              dealii::SolverFGMRES<TrilinosWrappers::MPI::Vector> fgmres(
+                control,
+                dealii::SolverFGMRES<
+                  TrilinosWrappers::MPI::Vector>::AdditionalData(40));
+              fgmres.solve(a, x, b, p);
             }
           else
             {

@@ -44,8 +44,9 @@ namespace rupture
      * the pairs that stick, slip or open on the fine mesh do so on every
      * level; it is symmetrised, so that every level operator is symmetric.
      * Smoothing is Chebyshev iteration around the pair-block Jacobi of the
-     * block-Jacobi preconditioner; the coarsest level is solved by CG with
-     * the same block Jacobi.
+     * block-Jacobi preconditioner; the coarsest level is solved by GMRES
+     * with the same block Jacobi to a loose tolerance (the V-cycle is
+     * therefore not exactly linear: use it in flexible Krylov methods).
      */
     template <int dim>
     class Multigrid

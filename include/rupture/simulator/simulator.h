@@ -29,6 +29,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -446,6 +447,10 @@ namespace rupture
     /// Work done on the fault: penalty spring energy plus friction (J).
     double       fault_work;
     unsigned int last_linear_iterations;
+    /// Krylov iterations and linear solves of the run, per phase
+    /// (quasi-static, dynamic).
+    std::array<unsigned long, 2> total_linear_iterations = {{0, 0}};
+    std::array<unsigned long, 2> n_linear_solves         = {{0, 0}};
     /// Whether prepare_output_directory() has run (only then may the
     /// destructor write the statistics of a failed run).
     bool output_prepared = false;
