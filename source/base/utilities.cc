@@ -232,5 +232,20 @@ namespace rupture
     parse_vector<2>(const std::string &, const std::string &, const bool);
     template Tensor<1, 3>
     parse_vector<3>(const std::string &, const std::string &, const bool);
+
+
+    std::string
+    message_of(const ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      // Collapse the indentation deal.II puts in front of lines.
+      std::string result;
+      for (const auto &line :
+           dealii::Utilities::split_string_list(s.str(), '\n'))
+        if (!dealii::Utilities::trim(line).empty())
+          result += (result.empty() ? "" : " ") + dealii::Utilities::trim(line);
+      return result;
+    }
   } // namespace Utilities
 } // namespace rupture

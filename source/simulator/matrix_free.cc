@@ -1,6 +1,7 @@
 // The matrix-free products (stiffness, effective system) and the block-
 // Jacobi preconditioner.
 
+#include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/base/partitioner.h>
@@ -74,13 +75,14 @@ namespace rupture
       {
         multigrid->reinit(description, communicator);
       }
-    catch (const ExcMessage &e)
+    catch (const ExceptionBase &e)
       {
         AssertThrow(false,
-                    ExcMessage(std::string("While building the levels of "
-                                           "<Solver/Preconditioner> = "
-                                           "multigrid: ") +
-                               e.what()));
+                    ExcMessage("While building the coarser mesh levels of "
+                               "<Solver/Preconditioner> = multigrid: " +
+                               Utilities::message_of(e) +
+                               " (the fault must lie on faces of the coarse "
+                               "mesh)"));
       }
     pcout << "   Multigrid: " << multigrid->summary();
     if (!test_mode)

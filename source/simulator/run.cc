@@ -84,23 +84,6 @@ namespace rupture
                          out);
     }
 
-    /**
-     * The text of a deal.II exception without the source location.
-     */
-    std::string
-    message_of(const ExceptionBase &e)
-    {
-      std::ostringstream s;
-      e.print_info(s);
-      std::string text = s.str();
-      // Collapse the indentation deal.II puts in front of lines.
-      std::string result;
-      for (const auto &line : dealii::Utilities::split_string_list(text, '\n'))
-        if (!dealii::Utilities::trim(line).empty())
-          result += (result.empty() ? "" : " ") + dealii::Utilities::trim(line);
-      return result;
-    }
-
     void
     apply_override(ParameterHandler &prm, const std::string &assignment)
     {
@@ -124,10 +107,11 @@ namespace rupture
           for (unsigned int i = 0; i + 1 < path.size(); ++i)
             prm.leave_subsection();
           AssertThrow(false,
-                      ExcMessage("The option --set \"" + assignment +
-                                 "\" was not accepted: " + message_of(e) +
-                                 " See 'rupture --print-parameters' for the "
-                                 "entries and their allowed values."));
+                      ExcMessage(
+                        "The option --set \"" + assignment +
+                        "\" was not accepted: " + Utilities::message_of(e) +
+                        " See 'rupture --print-parameters' for the "
+                        "entries and their allowed values."));
         }
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.leave_subsection();
@@ -255,7 +239,7 @@ namespace rupture
         catch (const ExceptionBase &e)
           {
             AssertThrow(false,
-                        ExcMessage(message_of(e) +
+                        ExcMessage(Utilities::message_of(e) +
                                    " See 'rupture --print-parameters' for the "
                                    "entries and their allowed values."));
           }
@@ -271,7 +255,7 @@ namespace rupture
     catch (const ExceptionBase &e)
       {
         if (root)
-          std::cerr << "\nError: " << message_of(e) << std::endl;
+          std::cerr << "\nError: " << Utilities::message_of(e) << std::endl;
         return 1;
       }
     catch (const std::exception &e)

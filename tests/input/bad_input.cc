@@ -186,6 +186,26 @@ main(int argc, char **argv)
          "Solver/Linear solver=MUMPS",
          "--set",
          "Solver/Preconditioner=block Jacobi"});
+  check("multigrid with a refinement region",
+        {"valid.prm",
+         "--set",
+         "Solver/Preconditioner=multigrid",
+         "--set",
+         "Discretization/Refinement region=1",
+         "--set",
+         "Discretization/Refinement region levels=1"});
+  check("multigrid with a fault that is not on faces of the coarse mesh",
+        {"valid.prm",
+         "--set",
+         "Solver/Preconditioner=multigrid",
+         "--set",
+         "Discretization/Initial global refinement=1",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 250",
+         "--set",
+         "Fault/Plane normal=0, 1"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

@@ -1,6 +1,7 @@
 #ifndef rupture_base_utilities_h
 #define rupture_base_utilities_h
 
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -80,6 +81,13 @@ namespace rupture
     void
     write_file_atomically(const std::string &filename,
                           const std::string &contents);
+
+    /**
+     * The text of a deal.II exception without its source location and
+     * stack trace, on one line: what the user is shown.
+     */
+    std::string
+    message_of(const ExceptionBase &e);
   } // namespace Utilities
 } // namespace rupture
 
