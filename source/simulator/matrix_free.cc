@@ -97,6 +97,17 @@ namespace rupture
 
 
   template <int dim>
+  bool
+  Simulator<dim>::use_multigrid_now() const
+  {
+    return multigrid &&
+           (current_scheme == TimeIntegration::Scheme::quasi_static ||
+            linear_solver.multigrid_in_dynamic_steps());
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::apply_stiffness(const VectorType &x, VectorType &y) const
   {
@@ -178,7 +189,7 @@ namespace rupture
   void
   Simulator<dim>::precondition_system(const VectorType &r, VectorType &z) const
   {
-    if (multigrid)
+    if (use_multigrid_now())
       {
         TimerOutput::Scope t(timer, "Multigrid V-cycle");
         multigrid->vmult(r.trilinos_vector()[0],

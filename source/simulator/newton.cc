@@ -310,7 +310,7 @@ namespace rupture
                               // lead Newton astray at contact (the 10 km
                               // Northeast-Japan loading: no convergence
                               // at 0.1, 6 iterations at 1e-3).
-                              linear_solver.multigrid() ?
+                              use_multigrid_now() ?
                                 std::min(newton_forcing, 1e-3) :
                                 newton_forcing,
                               eta) :
@@ -323,7 +323,7 @@ namespace rupture
             {
               // The contact tangent is that of the pairs' trial states, from
               // the last residual.
-              if (multigrid)
+              if (use_multigrid_now())
                 {
                   TimerOutput::Scope   t(timer, "Multigrid set-up");
                   const SystemFactors &c = system_factors;

@@ -278,8 +278,9 @@ namespace rupture
       }
     multigrid.reset();
     if (linear_solver.multigrid() &&
-        (scheme != Scheme::explicit_central_difference ||
-         time_parameters.loading_phase))
+        (scheme == Scheme::quasi_static || time_parameters.loading_phase ||
+         (scheme == Scheme::implicit_newmark &&
+          linear_solver.multigrid_in_dynamic_steps())))
       setup_multigrid();
 
     pcout << "   Degrees of freedom: " << dof_handler.n_dofs() << "\n";

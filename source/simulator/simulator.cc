@@ -260,13 +260,17 @@ namespace rupture
     if (multigrid)
       {
         // What multigrid is for: iteration counts that stay bounded.
-        pcout << "   Multigrid: Krylov iterations per linear solve";
+        pcout << "   Krylov iterations per linear solve:";
         const char *names[] = {"quasi-static", "dynamic"};
         for (unsigned int p = 0; p < 2; ++p)
           if (n_linear_solves[p] > 0)
             pcout << " " << std::fixed << std::setprecision(1)
                   << double(total_linear_iterations[p]) / n_linear_solves[p]
-                  << " (" << names[p] << ")" << std::defaultfloat;
+                  << " (" << names[p] << ", "
+                  << (p == 0 || linear_solver.multigrid_in_dynamic_steps() ?
+                        "multigrid" :
+                        "block Jacobi")
+                  << ")" << std::defaultfloat;
         pcout << "\n";
         if (!test_mode)
           pcout << "   Multigrid: " << multigrid->summary() << "\n";

@@ -76,6 +76,15 @@ namespace rupture
           "'multigrid' together with a direct 'Linear solver' is an "
           "error: the direct solvers store and factorise the matrix.");
         prm.declare_entry(
+          "Multigrid in dynamic steps",
+          "true",
+          Patterns::Bool(),
+          "With <Preconditioner> = multigrid: whether the dynamic (implicit "
+          "Newmark) steps use it too, or block Jacobi. Quasi-static steps "
+          "always use multigrid. In dynamic steps the mass term dominates "
+          "and block Jacobi needs few iterations, each as dear as a tenth "
+          "of a V-cycle (doc/performance.md).");
+        prm.declare_entry(
           "AMG aggregation",
           "uncoupled",
           Patterns::Selection("uncoupled|MIS"),
@@ -151,6 +160,7 @@ namespace rupture
       preconditioner_name = prm.get("Preconditioner");
       block_jacobi        = (preconditioner_name == "block Jacobi");
       use_multigrid       = (preconditioner_name == "multigrid");
+      multigrid_dynamic   = prm.get_bool("Multigrid in dynamic steps");
       AssertThrow(
         !matrix_free() || (solver_type != "direct" && solver_type != "MUMPS"),
         ExcMessage("<Solver/Preconditioner> = " + preconditioner_name +

@@ -249,6 +249,11 @@ namespace rupture
     /// Build the levels of the multigrid preconditioner for the mesh.
     void
     setup_multigrid();
+    /// Whether the solves of the current step use the multigrid
+    /// preconditioner (quasi-static steps always, dynamic ones if
+    /// <Solver/Multigrid in dynamic steps>), or block Jacobi.
+    bool
+    use_multigrid_now() const;
     /// Call @p action with the DoF indices, the stiffness matrix and (if
     /// @p with_mass) the consistent mass matrix of each locally owned cell.
     void

@@ -88,6 +88,13 @@ namespace rupture
         return use_multigrid;
       }
 
+      /// <Solver/Multigrid in dynamic steps>.
+      bool
+      multigrid_in_dynamic_steps() const
+      {
+        return use_multigrid && multigrid_dynamic;
+      }
+
       /**
        * Solve A x = b with CG (if @p symmetric under 'automatic') or
        * right-preconditioned GMRES for the operator @p system, preconditioned
@@ -178,9 +185,10 @@ namespace rupture
       double       aggregation_threshold = 1e-4;
       double       relative_tolerance;
       unsigned int max_iterations;
-      bool         use_cg        = true;
-      bool         block_jacobi  = false;
-      bool         use_multigrid = false;
+      bool         use_cg            = true;
+      bool         block_jacobi      = false;
+      bool         use_multigrid     = false;
+      bool         multigrid_dynamic = true;
       std::string  preconditioner_name;
       bool         use_pair_transform = true;
       std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg;
