@@ -358,6 +358,10 @@ namespace rupture
                 constrained = constrained || constraints.is_constrained(dof);
               }
         pair_dofs.reinit(locally_owned_dofs, indices, communicator);
+        std::vector<typename Operators::PairBlocks<dim>::PairDofs> pair_list;
+        for (const auto &pair : pairs)
+          pair_list.emplace_back(pair.minus, pair.plus);
+        contact_blocks.reinit(pair_list, locally_owned_dofs, communicator);
         if (split_node_method)
           AssertThrow(dealii::Utilities::MPI::max(constrained ? 1 : 0,
                                                   communicator) == 0,

@@ -68,6 +68,8 @@ namespace rupture
                                          to_3d(pair.location),
                                          dt);
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
+          contact_blocks.blocks[&pair - pairs.data()] =
+            pair.area * pair.trial.tangent;
 
           add_internal_force(pair, force_constraints, force);
 
@@ -371,25 +373,7 @@ namespace rupture
     void
     Fault<dim>::apply_tangent(const VectorType &x, VectorType &y) const
     {
-      std::vector<double> &values = pair_values[0];
-      pair_dofs.gather(x.trilinos_vector()[0], values);
-      for (unsigned int k = 0; k < pairs.size(); ++k)
-        {
-          const NodePair    &pair = pairs[k];
-          const unsigned int m0 = 2 * dim * k, p0 = m0 + dim;
-          // The block [D, -D; -D, D] times (x-, x+): -D j and D j, with the
-          // jump j = x+ - x-.
-          Tensor<1, dim> jump;
-          for (unsigned int d = 0; d < dim; ++d)
-            jump[d] = values[p0 + d] - values[m0 + d];
-          const Tensor<1, dim> f = pair.area * (pair.trial.tangent * jump);
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              values[m0 + d] = -f[d];
-              values[p0 + d] = f[d];
-            }
-        }
-      pair_dofs.scatter_add(values, y.trilinos_vector()[0]);
+      contact_blocks.apply(x.trilinos_vector()[0], y.trilinos_vector()[0]);
     }
 
 
@@ -418,36 +402,8 @@ namespace rupture
     Fault<dim>::prepare_pair_preconditioner(const VectorType &diagonal,
                                             const VectorType &free)
     {
-      pair_dofs.gather(diagonal.trilinos_vector()[0], pair_values[0]);
-      pair_dofs.gather(free.trilinos_vector()[0], pair_values[1]);
-      const std::vector<double> &ds = pair_values[0], &fs = pair_values[1];
-      constexpr unsigned int     n = 2 * dim;
-      pair_block_inverses.resize(pairs.size() * n * n);
-      pair_point_inverses.resize(pairs.size() * n);
-      FullMatrix<double> block(n, n), inverse(n, n);
-      for (unsigned int k = 0; k < pairs.size(); ++k)
-        {
-          const NodePair    &pair  = pairs[k];
-          const unsigned int first = n * k;
-          pair_tangent_block(pair, 1., block);
-          // Constrained DoFs: identity rows and columns.
-          for (unsigned int i = 0; i < n; ++i)
-            if (fs[first + i] == 0)
-              for (unsigned int j = 0; j < n; ++j)
-                block(i, j) = block(j, i) = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const bool   is_free = (fs[first + i] != 0);
-              const double d       = ds[first + i];
-              block(i, i) += (is_free ? d : 1);
-              // What the point-Jacobi part put into z at this entry.
-              pair_point_inverses[first + i] = (is_free && d > 0) ? 1 / d : 1;
-            }
-          inverse.invert(block);
-          std::copy(&inverse(0, 0),
-                    &inverse(0, 0) + n * n,
-                    pair_block_inverses.begin() + n * first);
-        }
+      contact_blocks.prepare(diagonal.trilinos_vector()[0],
+                             free.trilinos_vector()[0]);
     }
 
 
@@ -456,28 +412,8 @@ namespace rupture
     void
     Fault<dim>::precondition_pairs(const VectorType &r, VectorType &z) const
     {
-      constexpr unsigned int n = 2 * dim;
-      Assert(pair_block_inverses.size() == pairs.size() * n * n,
-             ExcMessage("prepare_pair_preconditioner() must come first."));
-      std::vector<double> &rs = pair_values[0];
-      std::vector<double> &zs = pair_values[1];
-      pair_dofs.gather(r.trilinos_vector()[0], rs);
-      zs.resize(rs.size());
-      for (unsigned int k = 0; k < pairs.size(); ++k)
-        {
-          const unsigned int first   = n * k;
-          const double      *inverse = pair_block_inverses.data() + n * first;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              double solution = 0;
-              for (unsigned int j = 0; j < n; ++j)
-                solution += inverse[i * n + j] * rs[first + j];
-              // z holds the point-Jacobi value here: add the difference.
-              zs[first + i] =
-                solution - pair_point_inverses[first + i] * rs[first + i];
-            }
-        }
-      pair_dofs.scatter_add(zs, z.trilinos_vector()[0]);
+      contact_blocks.precondition(r.trilinos_vector()[0],
+                                  z.trilinos_vector()[0]);
     }
 
 

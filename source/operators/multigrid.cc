@@ -4,6 +4,7 @@
 #include <rupture/base/sparse_gather.h>
 #include <rupture/operators/elastic_operator.h>
 #include <rupture/operators/multigrid.h>
+#include <rupture/operators/pair_blocks.h>
 
 #include <deal.II/base/partitioner.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -39,122 +40,6 @@ namespace rupture
                   src.begin() + src.locally_owned_size(),
                   dst.begin());
       }
-
-
-
-      /**
-       * The split pairs of one level with their symmetric contact blocks:
-       * the product y += T x and the pair-block Jacobi.
-       */
-      template <int dim>
-      struct PairBlocks
-      {
-        static constexpr unsigned int n = 2 * dim;
-
-        std::vector<typename Multigrid<dim>::PairDofs> pairs;
-        SparseGather                                   gather;
-        std::vector<Tensor<2, dim>>                    blocks;
-        std::vector<double>                            inverses, point_inverses;
-        mutable std::vector<double>                    values, results;
-
-        void
-        reinit(const std::vector<typename Multigrid<dim>::PairDofs> &p,
-               const IndexSet                                       &owned,
-               const MPI_Comm                                        comm)
-        {
-          pairs = p;
-          std::vector<types::global_dof_index> indices;
-          for (const auto &[minus, plus] : pairs)
-            {
-              indices.insert(indices.end(), minus.begin(), minus.end());
-              indices.insert(indices.end(), plus.begin(), plus.end());
-            }
-          gather.reinit(owned, indices, comm);
-        }
-
-        /// y += T x on owned arrays (x zero at constrained DoFs).
-        void
-        apply(const double *x, double *y) const
-        {
-          gather.gather(x, values);
-          for (unsigned int k = 0; k < pairs.size(); ++k)
-            {
-              Tensor<1, dim> jump;
-              for (unsigned int d = 0; d < dim; ++d)
-                jump[d] = values[n * k + dim + d] - values[n * k + d];
-              const Tensor<1, dim> f = blocks[k] * jump;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  values[n * k + d]       = -f[d];
-                  values[n * k + dim + d] = f[d];
-                }
-            }
-          gather.scatter_add(values, y);
-        }
-
-        /// Invert each pair's block diag + [D, -D; -D, D].
-        void
-        prepare(const double *diagonal, const double *free)
-        {
-          std::vector<double> ds, fs;
-          gather.gather(diagonal, ds);
-          gather.gather(free, fs);
-          inverses.resize(pairs.size() * n * n);
-          point_inverses.resize(pairs.size() * n);
-          FullMatrix<double> block(n, n), inverse(n, n);
-          for (unsigned int k = 0; k < pairs.size(); ++k)
-            {
-              const unsigned int first = n * k;
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  {
-                    const double d          = blocks[k][i][j];
-                    block(i, j)             = d;
-                    block(i, dim + j)       = -d;
-                    block(dim + i, j)       = -d;
-                    block(dim + i, dim + j) = d;
-                  }
-              for (unsigned int i = 0; i < n; ++i)
-                if (fs[first + i] == 0)
-                  for (unsigned int j = 0; j < n; ++j)
-                    block(i, j) = block(j, i) = 0;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const bool   is_free = (fs[first + i] != 0);
-                  const double d       = ds[first + i];
-                  block(i, i) += (is_free ? d : 1);
-                  point_inverses[first + i] = (is_free && d > 0) ? 1 / d : 1;
-                }
-              inverse.invert(block);
-              std::copy(&inverse(0, 0),
-                        &inverse(0, 0) + n * n,
-                        inverses.begin() + n * first);
-            }
-        }
-
-        /// z holds r / diag: replace it at the pairs by the blocks'
-        /// solutions.
-        void
-        precondition(const double *r, double *z) const
-        {
-          gather.gather(r, values);
-          results.resize(values.size());
-          for (unsigned int k = 0; k < pairs.size(); ++k)
-            {
-              const unsigned int first   = n * k;
-              const double      *inverse = inverses.data() + n * first;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  double solution = 0;
-                  for (unsigned int j = 0; j < n; ++j)
-                    solution += inverse[i * n + j] * values[first + j];
-                  results[first + i] =
-                    solution - point_inverses[first + i] * values[first + i];
-                }
-            }
-          gather.scatter_add(results, z);
-        }
-      };
 
 
 
@@ -752,12 +637,12 @@ namespace rupture
         {
           auto                       &level = *m.levels[l];
           auto                       &pb    = level.pair_blocks;
-          std::vector<Tensor<2, dim>> blocks(pb.pairs.size());
+          std::vector<Tensor<2, dim>> blocks(pb.pairs().size());
           std::vector<double>         values;
           for (unsigned int d = 0; d < dim; ++d)
             {
-              pb.gather.gather(level.tangent[d].begin(), values);
-              for (unsigned int k = 0; k < pb.pairs.size(); ++k)
+              pb.gather().gather(level.tangent[d].begin(), values);
+              for (unsigned int k = 0; k < pb.pairs().size(); ++k)
                 for (unsigned int c = 0; c < dim; ++c)
                   blocks[k][c][d] = values[2 * dim * k + c];
             }

@@ -4,6 +4,7 @@
 #include <rupture/base/sparse_gather.h>
 #include <rupture/fault/contact.h>
 #include <rupture/friction/interface.h>
+#include <rupture/operators/pair_blocks.h>
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/index_set.h>
@@ -455,9 +456,9 @@ namespace rupture
       /// or added to them.
       SparseGather                pair_dofs;
       mutable std::vector<double> pair_values[4];
-      // Each pair's inverted block (row-major) and the point-Jacobi factor
-      // of its entries, from prepare_pair_preconditioner().
-      std::vector<double> pair_block_inverses, pair_point_inverses;
+      /// The pairs' contact blocks (area times the tangent of the last
+      /// assemble()): the matrix-free tangent and its block Jacobi.
+      Operators::PairBlocks<dim> contact_blocks;
       /// Fault faces of locally owned cells, as vertex keys.
       std::vector<std::vector<types::global_dof_index>> owned_faces;
       unsigned int                                      n_global_split    = 0;
