@@ -43,6 +43,17 @@ namespace rupture
           "number per dimension. Empty: the horizontal direction in the "
           "fault, n x e_z (in 2-D the fault's tangent with n x t > 0). The "
           "down-dip (v) direction is n x strike, turned to point down.");
+        prm.declare_entry(
+          "Output interval",
+          "",
+          Patterns::Anything(),
+          "Simulated time (s) between outputs of the fault surface "
+          "(fault.pvd) and of the station and rupture-time files. Empty: "
+          "the volume's <Output/Output interval>. 0 writes every step; a "
+          "negative value writes the surface never and the tables at the "
+          "end only. The fault's files scale with the fault, not with the "
+          "mesh, so a large model can write its fault every step and its "
+          "volume rarely.");
       }
       prm.leave_subsection();
       prm.leave_subsection();
@@ -56,9 +67,12 @@ namespace rupture
     {
       prm.enter_subsection("Fault");
       prm.enter_subsection("Output");
-      station_text = prm.get("Stations");
-      strike_text  = prm.get("Along-strike direction");
+      station_text  = prm.get("Stations");
+      strike_text   = prm.get("Along-strike direction");
+      interval_text = dealii::Utilities::trim(prm.get("Output interval"));
       prm.leave_subsection();
+      if (!interval_text.empty())
+        surface_interval(0);
       prm.leave_subsection();
 
       stations.clear();
@@ -71,6 +85,33 @@ namespace rupture
           s.location = location;
           stations.push_back(s);
         }
+    }
+
+
+
+    template <int dim>
+    double
+    FaultOutput<dim>::surface_interval(const double volume_interval) const
+    {
+      if (interval_text.empty())
+        return volume_interval;
+      double      value = 0;
+      std::size_t end   = 0;
+      try
+        {
+          value = std::stod(interval_text, &end);
+        }
+      catch (...)
+        {
+          end = 0;
+        }
+      AssertThrow(end == interval_text.size() && std::isfinite(value),
+                  ExcMessage("<Fault/Output/Output interval> must be empty "
+                             "(the volume's output interval) or one finite "
+                             "number of seconds (0: every step, negative: "
+                             "never), but is <" +
+                             interval_text + ">."));
+      return value;
     }
 
 

@@ -416,6 +416,7 @@ namespace rupture
       {
         fault_output = std::make_unique<Fault::FaultOutput<dim>>();
         fault_output->parse_parameters(prm);
+        fault_output_interval = fault_output->surface_interval(output_interval);
       }
     n_sides = fault ? 2 : 1;
     if (fault)

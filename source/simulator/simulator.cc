@@ -492,32 +492,49 @@ namespace rupture
   void
   Simulator<dim>::write_step_output(const bool force)
   {
-    // Receiver series are small: written at every output time and at the
-    // end, also when no volume output is wanted.
-    if (force ||
-        (output_interval >= 0 && time >= next_output_time - 1e-9 * time_step))
+    // The volume and the fault have intervals of their own: the fault's
+    // files scale with the fault, so a large model may write its fault
+    // often and its volume rarely. A forced output (the first and last
+    // step) writes everything that is written at all.
+    const auto due = [&](const double interval, const double next) {
+      return interval >= 0 && (force || time >= next - 1e-9 * time_step);
+    };
+    const bool volume_due = due(output_interval, next_output_time);
+    const bool fault_due =
+      fault && due(fault_output_interval, next_fault_output_time);
+
+    // Receiver series, the fault's tables and the statistics are small:
+    // written at every output time and at the end.
+    if (force || volume_due || fault_due)
       receivers->write(output_directory, time_step);
-    if (output_interval < 0)
-      return;
-    if (!force && time < next_output_time - 1e-9 * time_step)
+    if (!volume_due && !fault_due)
       return;
     TimerOutput::Scope t(timer, "Output");
-    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
-    VectorType v_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
-    u_ghost = displacement;
-    v_ghost = velocity;
-    volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
-    if (fault)
+    if (volume_due)
+      {
+        VectorType u_ghost(locally_owned_dofs,
+                           locally_relevant_dofs,
+                           communicator);
+        VectorType v_ghost(locally_owned_dofs,
+                           locally_relevant_dofs,
+                           communicator);
+        u_ghost = displacement;
+        v_ghost = velocity;
+        volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
+        next_output_time = time + output_interval;
+      }
+    if (fault_due)
       {
         fault_output->write_surface(*fault, output_directory, time, step);
-        fault_output->write_tables(*fault,
-                                   output_directory,
-                                   time_step,
-                                   test_mode);
+        next_fault_output_time = time + fault_output_interval;
       }
+    if (fault)
+      fault_output->write_tables(*fault,
+                                 output_directory,
+                                 time_step,
+                                 test_mode);
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       statistics.write(output_directory + "/statistics");
-    next_output_time = time + output_interval;
   }
 
 

@@ -40,6 +40,14 @@ namespace rupture
       parse_parameters(ParameterHandler &prm);
 
       /**
+       * Simulated time (s) between fault surface outputs: negative for
+       * none, 0 for every step. <Fault/Output/Output interval> if given,
+       * else @p volume_interval.
+       */
+      double
+      surface_interval(const double volume_interval) const;
+
+      /**
        * Locate the stations on the fault (an error names a station that is
        * not on it) and set the strike and dip directions.
        */
@@ -95,6 +103,7 @@ namespace rupture
       MPI_Comm                                          communicator;
       std::string                                       station_text;
       std::string                                       strike_text;
+      std::string                                       interval_text;
       std::vector<Station>                              stations;
       std::set<types::global_dof_index>                 station_keys;
       Tensor<1, dim>                                    strike;

@@ -333,9 +333,11 @@ namespace rupture
     double                                             rayleigh_beta;
     double                                             gravity;
     double                                             output_interval;
-    unsigned int                                       cells_per_output_piece;
-    unsigned int                                       screen_interval;
-    TimeIntegration::Parameters                        time_parameters;
+    /// Simulated time between fault surface outputs (negative: none).
+    double                      fault_output_interval = -1;
+    unsigned int                cells_per_output_piece;
+    unsigned int                screen_interval;
+    TimeIntegration::Parameters time_parameters;
     /// The scheme of the phase being run.
     TimeIntegration::Scheme              current_scheme;
     std::unique_ptr<FunctionParser<dim>> body_force;
@@ -490,6 +492,7 @@ namespace rupture
     /// Resident memory (bytes, all ranks) after each set-up stage.
     std::vector<std::pair<std::string, double>> memory_by_stage;
     double                                      next_output_time;
+    double                                      next_fault_output_time = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     Output::Statistics                         statistics;
