@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -204,6 +205,18 @@ namespace rupture
                                        "Fault/Forced slip/Direction");
       prm.leave_subsection();
       fault->friction_law = Friction::create(prm);
+      // The split-node method evaluates friction at the slip of the
+      // predictor; a law of the slip rate needs the slip rate and the
+      // traction solved together at each node, which it does not do yet.
+      AssertThrow(!fault->split_node_method ||
+                    !fault->friction_law->depends_on_slip_rate(),
+                  ExcMessage("<Fault/Friction law> = " +
+                             prm.get("Friction law") +
+                             " depends on the slip rate, which <Fault/Model> "
+                             "= traction at split nodes does not support "
+                             "yet. Use <Fault/Model> = penalty contact (with "
+                             "the implicit Newmark or quasi-static scheme), "
+                             "or a slip-weakening law."));
       prm.leave_subsection();
       return fault;
     }
@@ -323,7 +336,16 @@ namespace rupture
                                    "but are " +
                                    values.str() + " at (" + where.str() +
                                    ")."));
-            friction_law->initialize_state(x, pair.state);
+            {
+              const double tn = pair.initial_traction * pair.normal;
+              const double ts =
+                (pair.initial_traction - tn * pair.normal).norm();
+              friction_law->initialize_state(
+                x,
+                (tn < 0) ? ts / (-tn) :
+                           std::numeric_limits<double>::quiet_NaN(),
+                pair.state);
+            }
             if (forced_region->value(pair.location) != 0)
               {
                 pair.forced = true;

@@ -6,7 +6,9 @@ namespace rupture
   namespace Friction
   {
     void
-    Interface::initialize_state(const Point<3> &, State &state) const
+    Interface::initialize_state(const Point<3> &,
+                                const double,
+                                State &state) const
     {
       state = State();
     }
@@ -22,7 +24,7 @@ namespace rupture
     {
       updated           = old;
       updated.slip_path = old.slip_path + slip_increment;
-      updated.slip_rate = slip_increment / dt;
+      updated.slip_rate = (dt > 0) ? slip_increment / dt : 0.;
     }
 
 

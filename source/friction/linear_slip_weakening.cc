@@ -115,7 +115,9 @@ namespace rupture
 
 
     void
-    LinearSlipWeakening::initialize_state(const Point<3> &x, State &state) const
+    LinearSlipWeakening::initialize_state(const Point<3> &x,
+                                          const double,
+                                          State &state) const
     {
       state                           = State();
       const auto [mu0, mud, ld, c, f] = point_parameters(x, state);

@@ -5,6 +5,7 @@
 #include <deal.II/base/point.h>
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,9 +53,23 @@ namespace rupture
 
       /**
        * Set up the state variables of a point at the start of a run.
+       * @p initial_friction is the ratio |tau_0| / |sigma_0| of the fault's
+       * initial shear and normal traction there (NaN where the fault is not
+       * in compression), for laws whose initial state is defined by it.
        */
       virtual void
-      initialize_state(const Point<3> &x, State &state) const;
+      initialize_state(const Point<3> &x,
+                       const double    initial_friction,
+                       State          &state) const;
+
+      /**
+       * The same without an initial traction (laws that need one throw).
+       */
+      void
+      initialize_state(const Point<3> &x, State &state) const
+      {
+        initialize_state(x, std::numeric_limits<double>::quiet_NaN(), state);
+      }
 
       /**
        * The friction coefficient after a slip increment @p slip_increment
@@ -104,6 +119,17 @@ namespace rupture
        */
       void
       enable_weakening(const bool enable);
+
+      /**
+       * Whether the friction coefficient depends on the slip rate (the slip
+       * increment over dt) and not only on the slip path: rate-and-state
+       * laws.
+       */
+      virtual bool
+      depends_on_slip_rate() const
+      {
+        return false;
+      }
 
       /**
        * Whether the friction at @p x can still weaken from @p state (a

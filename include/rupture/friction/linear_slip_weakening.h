@@ -31,8 +31,12 @@ namespace rupture
       void
       parse_parameters(ParameterHandler &prm) override;
 
+      using Interface::initialize_state;
+
       void
-      initialize_state(const Point<3> &x, State &state) const override;
+      initialize_state(const Point<3> &x,
+                       const double    initial_friction,
+                       State          &state) const override;
 
       double
       coefficient(const Point<3> &x,

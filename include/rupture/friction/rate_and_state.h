@@ -1,0 +1,154 @@
+#ifndef rupture_friction_rate_and_state_h
+#define rupture_friction_rate_and_state_h
+
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <array>
+
+namespace rupture
+{
+  namespace Friction
+  {
+    /**
+     * Dieterich-Ruina rate-and-state friction with one state variable theta
+     * (s), in the form of the SCEC benchmarks, with a (direct effect),
+     * b (evolution effect), L (characteristic slip distance), the reference
+     * friction coefficient f0 at the reference slip rate V0:
+     *
+     * - logarithmic form (the review paper's eq. 4.3):
+     *     mu = f0 + a ln(V / V0) + b ln(V0 theta / L),
+     *   which has no value at V = 0 (there it is taken at V = 1e-30 m/s);
+     * - regularised form (the SCEC benchmarks TPV101-104), finite and 0 at
+     *   V = 0 and equal to the logarithmic one when V >> V0 exp(-Psi/a):
+     *     mu = a asinh(V / (2 V0) exp(Psi / a)),  Psi = f0 + b ln(V0 theta/L).
+     *
+     * Two evolution laws for theta:
+     * - aging (slowness) law: d theta/dt = 1 - V theta / L (the review's
+     *   eq. 4.5 and 4.6 carry the same law);
+     * - slip law: d theta/dt = -(V theta / L) ln(V theta / L). With the
+     *   additive state vartheta = b ln(V0 theta / L) this is exactly the
+     *   review's eq. 4.3: d vartheta/dt = -(V/L)(vartheta + b ln(V/V0)).
+     *
+     * Within a step of length dt the slip rate V = (slip increment)/dt is
+     * constant, and both laws are integrated exactly over the step: with
+     * x = V dt / L,
+     *   aging: theta_new = theta e^(-x) + dt (1 - e^(-x)) / x,
+     *   slip:  ln theta_new = ln theta + (e^(-x) - 1) ln(V theta / L).
+     * This holds for any V dt / L (the forward-Euler update is unstable for
+     * dt > 2 L / V), for V -> 0 (aging: theta grows by dt; slip: theta
+     * stays) and for very large V (theta -> L / V). The friction
+     * coefficient of a step is mu(V, theta_new(V)), fully implicit, and its
+     * derivative with respect to the slip increment includes
+     * d theta_new / dV: the consistent tangent of the contact return
+     * mapping.
+     *
+     * The initial state is <Initial state> if given, else the one for which
+     * the law holds at t = 0: mu(V_ini, theta) = |tau_0| / |sigma_0| with
+     * the fault's initial shear and normal traction and <Initial slip rate>
+     * V_ini.
+     *
+     * The state variables of a point are {theta}; its parameters
+     * {a, b, L, f0, V0}.
+     */
+    class RateAndState : public Interface
+    {
+    public:
+      enum class Formulation
+      {
+        regularized,
+        logarithmic
+      };
+      enum class EvolutionLaw
+      {
+        aging,
+        slip
+      };
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      using Interface::initialize_state;
+
+      void
+      initialize_state(const Point<3> &x,
+                       const double    initial_friction,
+                       State          &state) const override;
+
+      double
+      coefficient(const Point<3> &x,
+                  const State    &old,
+                  const double    slip_increment,
+                  const double    dt,
+                  double         &derivative) const override;
+
+      double
+      cohesion(const Point<3> &x, const State &state) const override;
+
+      bool
+      depends_on_slip_rate() const override
+      {
+        return true;
+      }
+
+      void
+      update_state(const Point<3> &x,
+                   const State    &old,
+                   const double    slip_increment,
+                   const double    dt,
+                   State          &updated) const override;
+
+      /**
+       * The point's constants {a, b, L, f0, V0}.
+       */
+      using Constants = std::array<double, 5>;
+
+      /**
+       * The state theta after a step of length @p dt at the constant slip
+       * rate @p V from @p theta, and d theta_new / d V in @p dtheta_dV.
+       */
+      double
+      evolve(const Constants &c,
+             const double     theta,
+             const double     V,
+             const double     dt,
+             double          &dtheta_dV) const;
+
+      /**
+       * mu(V, theta) and its partial derivatives.
+       */
+      double
+      friction(const Constants &c,
+               const double     V,
+               const double     theta,
+               double          &dmu_dV,
+               double          &dmu_dtheta) const;
+
+      /**
+       * The steady-state friction coefficient at slip rate @p V.
+       */
+      double
+      steady_state_friction(const Constants &c, const double V) const;
+
+    private:
+      Constants
+      constants(const Point<3> &x, const State &state) const;
+
+      Formulation                        formulation = Formulation::regularized;
+      EvolutionLaw                       evolution   = EvolutionLaw::aging;
+      std::unique_ptr<FunctionParser<3>> direct_effect;
+      std::unique_ptr<FunctionParser<3>> evolution_effect;
+      std::unique_ptr<FunctionParser<3>> slip_distance;
+      std::unique_ptr<FunctionParser<3>> reference_friction;
+      std::unique_ptr<FunctionParser<3>> reference_rate;
+      std::unique_ptr<FunctionParser<3>> initial_state;
+      std::unique_ptr<FunctionParser<3>> initial_rate;
+    };
+  } // namespace Friction
+} // namespace rupture
+
+#endif

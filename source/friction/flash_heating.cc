@@ -1,0 +1,305 @@
+#include <rupture/base/utilities.h>
+#include <rupture/friction/flash_heating.h>
+#include <rupture/friction/state_evolution.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Friction
+  {
+    namespace
+    {
+      /// psi_ss has no value at V = 0: it is taken at V >= this rate (m/s).
+      constexpr double minimum_rate = 1e-30;
+
+      const std::array<const char *, 7> names = {
+        "Direct effect",
+        "Evolution effect",
+        "Characteristic slip distance",
+        "Reference friction coefficient",
+        "Reference slip rate",
+        "Weakened friction coefficient",
+        "Weakening slip rate"};
+    } // namespace
+
+
+
+    void
+    FlashHeating::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Flash heating");
+      {
+        const std::array<const char *, 7> defaults = {
+          "0.01", "0.014", "0.4", "0.6", "1e-6", "0.2", "0.1"};
+        const std::array<const char *, 7> help = {
+          "a, the direct effect, as a function of x, y, z (m; in 2-D "
+          "z = 0). > 0.",
+          "b, the evolution effect, as a function of x, y, z. >= 0.",
+          "L (m), the slip over which the state evolves, as a function of "
+          "x, y, z. > 0.",
+          "f0, the steady-state friction coefficient at V0, as a function of "
+          "x, y, z.",
+          "V0 (m/s), the reference slip rate, as a function of x, y, z. > 0.",
+          "f_w, the fully weakened friction coefficient, as a function of x, "
+          "y, z. > 0.",
+          "V_w (m/s), the slip rate above which flash heating weakens the "
+          "fault, as a function of x, y, z. > 0."};
+        for (unsigned int i = 0; i < 7; ++i)
+          prm.declare_entry(names[i],
+                            defaults[i],
+                            Patterns::Anything(),
+                            help[i]);
+        prm.declare_entry(
+          "Initial state",
+          "",
+          Patterns::Anything(),
+          "psi at t = 0 as a function of x, y, z. Empty: the state for which "
+          "the law holds at t = 0 with the fault's initial traction and the "
+          "<Initial slip rate>.");
+        prm.declare_entry("Initial slip rate",
+                          "1e-16",
+                          Patterns::Anything(),
+                          "V_ini (m/s), the slip rate that defines the "
+                          "initial state when <Initial state> is empty, as a "
+                          "function of x, y, z. > 0.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    FlashHeating::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Flash heating");
+      {
+        const auto parse = [&](const std::string &entry) {
+          return Utilities::parse_function<3>(prm.get(entry),
+                                              1,
+                                              "Fault/Flash heating/" + entry,
+                                              "x,y,z");
+        };
+        for (unsigned int i = 0; i < 7; ++i)
+          functions[i] = parse(names[i]);
+        initial_rate = parse("Initial slip rate");
+        if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
+          initial_state = parse("Initial state");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    FlashHeating::Constants
+    FlashHeating::constants(const Point<3> &x, const State &state) const
+    {
+      Constants c;
+      for (unsigned int i = 0; i < 7; ++i)
+        c[i] = (state.parameters.size() == 7) ? state.parameters[i] :
+                                                functions[i]->value(x);
+      return c;
+    }
+
+
+
+    double
+    FlashHeating::steady_state_friction(const Constants &c,
+                                        const double     V,
+                                        double          &derivative)
+    {
+      const auto [a, b, L, f0, V0, fw, Vw] = c;
+      (void)L;
+      const double v    = std::max(V, minimum_rate);
+      const double f_lv = f0 - (b - a) * std::log(v / V0);
+      const double r    = v / Vw;
+      // g = (1 + r^8)^(-1/8), g' = -r^7 / Vw (1 + r^8)^(-9/8).
+      double g, dg;
+      if (r > 1e30)
+        {
+          g  = 1 / r;
+          dg = -1 / (r * v);
+        }
+      else
+        {
+          const double r8 = std::pow(r, 8);
+          g               = std::pow(1 + r8, -0.125);
+          dg              = -std::pow(r, 7) / Vw * std::pow(1 + r8, -1.125);
+        }
+      derivative =
+        (V >= minimum_rate) ? -(b - a) / v * g + (f_lv - fw) * dg : 0.;
+      return fw + (f_lv - fw) * g;
+    }
+
+
+
+    double
+    FlashHeating::steady_state(const Constants &c,
+                               const double     V,
+                               double          &derivative)
+    {
+      const double a  = c[0];
+      const double V0 = c[4];
+      const double v  = std::max(V, minimum_rate);
+      double       df = 0;
+      // f_ss > 0 for f_w > 0: psi_ss = a (ln(2 V0 / V) + ln sinh(f_ss/a)).
+      const double f = std::max(steady_state_friction(c, v, df), 1e-300);
+      const double y = f / a;
+      // d ln sinh(y) / dy = coth(y).
+      const double coth = (y > 20) ? 1. : 1. / std::tanh(y);
+      derivative        = (V >= minimum_rate) ? a * (-1 / v) + coth * df : 0.;
+      return a * (std::log(2 * V0 / v) + StateEvolution::log_sinh(y));
+    }
+
+
+
+    double
+    FlashHeating::evolve(const Constants &c,
+                         const double     psi,
+                         const double     V,
+                         const double     dt,
+                         double          &dpsi_dV)
+    {
+      if (V <= 0)
+        {
+          // The state does not evolve without slip; its rate of change
+          // with V is taken at the smallest rate psi_ss allows.
+          double       dss = 0;
+          const double ss  = steady_state(c, minimum_rate, dss);
+          dpsi_dV          = (ss - psi) * dt / c[2];
+          return psi;
+        }
+      const double L   = c[2];
+      const double x   = V * dt / L;
+      const double e   = std::exp(-x);
+      double       dss = 0;
+      const double ss  = steady_state(c, V, dss);
+      // psi_new = psi e^-x + psi_ss (1 - e^-x).
+      dpsi_dV = (ss - psi) * e * dt / L - std::expm1(-x) * dss;
+      return psi * e - ss * std::expm1(-x);
+    }
+
+
+
+    double
+    FlashHeating::friction(const Constants &c,
+                           const double     V,
+                           const double     psi,
+                           double          &dmu_dV,
+                           double          &dmu_dpsi)
+    {
+      return StateEvolution::regularized_friction(
+        c[0], c[4], V, psi, dmu_dV, dmu_dpsi);
+    }
+
+
+
+    void
+    FlashHeating::initialize_state(const Point<3> &x,
+                                   const double    initial_friction,
+                                   State          &state) const
+    {
+      state                = State();
+      const Constants    c = constants(x, state);
+      std::ostringstream at;
+      at << " at the fault point (" << x << ")";
+      const auto require = [&](const bool         ok,
+                               const std::string &entry,
+                               const double       value,
+                               const std::string &allowed) {
+        AssertThrow(ok,
+                    ExcMessage("<Fault/Flash heating/" + entry + "> is " +
+                               std::to_string(value) + at.str() +
+                               ", but it must be " + allowed + "."));
+      };
+      for (const unsigned int i : {0u, 2u, 4u, 5u, 6u})
+        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
+      require(std::isfinite(c[1]) && c[1] >= 0, names[1], c[1], ">= 0");
+      require(std::isfinite(c[3]), names[3], c[3], "a finite number");
+      state.parameters.assign(c.begin(), c.end());
+
+      double psi = 0;
+      if (initial_state)
+        {
+          psi = initial_state->value(x);
+          require(std::isfinite(psi), "Initial state", psi, "finite");
+        }
+      else
+        {
+          const double V = initial_rate->value(x);
+          require(std::isfinite(V) && V > 0,
+                  "Initial slip rate",
+                  V,
+                  "> 0 (m/s)");
+          AssertThrow(std::isfinite(initial_friction) && initial_friction > 0,
+                      ExcMessage(
+                        "<Fault/Flash heating/Initial state> is empty, so "
+                        "the initial state is the one for which the law "
+                        "holds at t = 0 with the fault's initial traction, "
+                        "but the fault is not in compression or carries no "
+                        "shear" +
+                        at.str() + ". Give an <Initial state>."));
+          // a asinh(V / (2 V0) e^(psi/a)) = mu_ini.
+          psi = c[0] * (std::log(2 * c[4] / V) +
+                        StateEvolution::log_sinh(initial_friction / c[0]));
+        }
+      state.variables = {psi};
+    }
+
+
+
+    double
+    FlashHeating::coefficient(const Point<3> &x,
+                              const State    &old,
+                              const double    slip_increment,
+                              const double    dt,
+                              double         &derivative) const
+    {
+      const Constants c = constants(x, old);
+      const double    V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
+      double          dpsi_dV  = 0;
+      const double    psi      = evolve(c, old.variables.at(0), V, dt, dpsi_dV);
+      double          dmu_dV   = 0;
+      double          dmu_dpsi = 0;
+      const double    mu       = friction(c, V, psi, dmu_dV, dmu_dpsi);
+      derivative = (dt > 0) ? (dmu_dV + dmu_dpsi * dpsi_dV) / dt : 0.;
+      return mu;
+    }
+
+
+
+    double
+    FlashHeating::cohesion(const Point<3> &, const State &) const
+    {
+      return 0;
+    }
+
+
+
+    void
+    FlashHeating::update_state(const Point<3> &x,
+                               const State    &old,
+                               const double    slip_increment,
+                               const double    dt,
+                               State          &updated) const
+    {
+      Interface::update_state(x, old, slip_increment, dt, updated);
+      const Constants c      = constants(x, old);
+      double          unused = 0;
+      updated.variables      = {
+             evolve(c,
+               old.variables.at(0),
+               (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.),
+               dt,
+               unused)};
+    }
+
+    RUPTURE_REGISTER_FRICTION_LAW(
+      FlashHeating,
+      "flash heating",
+      "Rate-and-state slip law with strong rate weakening by flash heating "
+      "(SCEC TPV103/104), regularised form.")
+  } // namespace Friction
+} // namespace rupture

@@ -1,0 +1,284 @@
+#include <rupture/base/utilities.h>
+#include <rupture/friction/state_evolution.h>
+#include <rupture/friction/two_state_variables.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Friction
+  {
+    namespace
+    {
+      /// ln(V/Vc) has no value at V = 0: it is taken at V >= this rate.
+      constexpr double minimum_rate = 1e-30;
+
+      const std::array<const char *, 7> names = {"Static friction coefficient",
+                                                 "Direct effect",
+                                                 "Evolution effect 1",
+                                                 "Evolution effect 2",
+                                                 "Slip distance 1",
+                                                 "Slip distance 2",
+                                                 "Reference slip rate"};
+    } // namespace
+
+
+
+    void
+    TwoStateVariables::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Two state variables");
+      {
+        prm.declare_entry("Formulation",
+                          "logarithmic",
+                          Patterns::Selection("regularized|logarithmic"),
+                          "logarithmic: the review paper's eq. 4.4, mu = mu0 "
+                          "+ th1 + th2 + A ln(V/Vc), taken at V = 1e-30 m/s "
+                          "where V is smaller; regularized: mu = A asinh(V/"
+                          "(2 Vc) exp((mu0 + th1 + th2)/A)), finite at "
+                          "V = 0.");
+        const std::array<const char *, 7> defaults = {
+          "0.6", "0.008", "0.006", "0.006", "0.01", "0.1", "1e-6"};
+        const std::array<const char *, 7> help = {
+          "mu0, the friction coefficient at steady sliding at Vc, as a "
+          "function of x, y, z (m; in 2-D z = 0).",
+          "A, the direct effect, as a function of x, y, z. > 0.",
+          "B1, the evolution effect of the first state variable, as a "
+          "function of x, y, z. >= 0.",
+          "B2, the evolution effect of the second state variable, as a "
+          "function of x, y, z. >= 0.",
+          "d1 (m), the slip over which the first state evolves, as a "
+          "function of x, y, z. > 0.",
+          "d2 (m), the slip over which the second state evolves, as a "
+          "function of x, y, z. > 0.",
+          "Vc (m/s), the reference slip rate, as a function of x, y, z. > 0."};
+        for (unsigned int i = 0; i < 7; ++i)
+          prm.declare_entry(names[i],
+                            defaults[i],
+                            Patterns::Anything(),
+                            help[i]);
+        for (const std::string i : {"1", "2"})
+          prm.declare_entry("Initial state " + i,
+                            "",
+                            Patterns::Anything(),
+                            "th_" + i +
+                              " at t = 0 as a function of x, y, z. Empty "
+                              "(both): the state for which the law holds "
+                              "at t = 0 with the fault's initial traction "
+                              "and the <Initial slip rate>, shared in the "
+                              "ratio B1 : B2.");
+        prm.declare_entry("Initial slip rate",
+                          "1e-12",
+                          Patterns::Anything(),
+                          "V_ini (m/s), the slip rate that defines the "
+                          "initial state when the initial states are empty, "
+                          "as a function of x, y, z. > 0.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    TwoStateVariables::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Two state variables");
+      {
+        const auto parse = [&](const std::string &entry) {
+          return Utilities::parse_function<3>(
+            prm.get(entry), 1, "Fault/Two state variables/" + entry, "x,y,z");
+        };
+        logarithmic = (prm.get("Formulation") == "logarithmic");
+        for (unsigned int i = 0; i < 7; ++i)
+          functions[i] = parse(names[i]);
+        initial_rate = parse("Initial slip rate");
+        const bool
+          first  = !dealii::Utilities::trim(prm.get("Initial state 1")).empty(),
+          second = !dealii::Utilities::trim(prm.get("Initial state 2")).empty();
+        AssertThrow(first == second,
+                    ExcMessage("<Fault/Two state variables/Initial state 1> "
+                               "and <Initial state 2> must both be given or "
+                               "both be empty."));
+        if (first)
+          {
+            initial_state[0] = parse("Initial state 1");
+            initial_state[1] = parse("Initial state 2");
+          }
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    TwoStateVariables::Constants
+    TwoStateVariables::constants(const Point<3> &x, const State &state) const
+    {
+      Constants c;
+      for (unsigned int i = 0; i < 7; ++i)
+        c[i] = (state.parameters.size() == 7) ? state.parameters[i] :
+                                                functions[i]->value(x);
+      return c;
+    }
+
+
+
+    double
+    TwoStateVariables::evolve(const Constants   &c,
+                              const unsigned int i,
+                              const double       th,
+                              const double       V,
+                              const double       dt,
+                              double            &dth_dV)
+    {
+      const double B  = c[2 + i];
+      const double d  = c[4 + i];
+      const double Vc = c[6];
+      // th_new = th e^-x + th_ss (1 - e^-x), th_ss = -B ln(V/Vc), x = V dt/d;
+      // (1 - e^-x) / V = (dt/d) w(x).
+      const double v       = std::max(V, minimum_rate);
+      const double x       = v * dt / d;
+      const double e       = std::exp(-x);
+      double       dweight = 0;
+      const double weight  = StateEvolution::relaxation_weight(x, dweight);
+      const double ss      = -B * std::log(v / Vc);
+      dth_dV               = (dt / d) * ((ss - th) * e - B * weight);
+      if (V <= 0)
+        return th;
+      return th * e - ss * std::expm1(-x);
+    }
+
+
+
+    double
+    TwoStateVariables::friction(const Constants &c,
+                                const double     V,
+                                const double     th_sum,
+                                double          &dmu_dV,
+                                double          &dmu_dth) const
+    {
+      const double mu0 = c[0], A = c[1], Vc = c[6];
+      if (logarithmic)
+        {
+          const double v = std::max(V, minimum_rate);
+          dmu_dV         = (V >= minimum_rate) ? A / v : 0.;
+          dmu_dth        = 1;
+          return mu0 + th_sum + A * std::log(v / Vc);
+        }
+      return StateEvolution::regularized_friction(
+        A, Vc, V, mu0 + th_sum, dmu_dV, dmu_dth);
+    }
+
+
+
+    void
+    TwoStateVariables::initialize_state(const Point<3> &x,
+                                        const double    initial_friction,
+                                        State          &state) const
+    {
+      state                = State();
+      const Constants    c = constants(x, state);
+      std::ostringstream at;
+      at << " at the fault point (" << x << ")";
+      const auto require = [&](const bool         ok,
+                               const std::string &entry,
+                               const double       value,
+                               const std::string &allowed) {
+        AssertThrow(ok,
+                    ExcMessage("<Fault/Two state variables/" + entry + "> is " +
+                               std::to_string(value) + at.str() +
+                               ", but it must be " + allowed + "."));
+      };
+      require(std::isfinite(c[0]), names[0], c[0], "a finite number");
+      for (const unsigned int i : {1u, 4u, 5u, 6u})
+        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
+      for (const unsigned int i : {2u, 3u})
+        require(std::isfinite(c[i]) && c[i] >= 0, names[i], c[i], ">= 0");
+      state.parameters.assign(c.begin(), c.end());
+
+      if (initial_state[0])
+        {
+          state.variables = {initial_state[0]->value(x),
+                             initial_state[1]->value(x)};
+          for (unsigned int i = 0; i < 2; ++i)
+            require(std::isfinite(state.variables[i]),
+                    "Initial state " + std::to_string(i + 1),
+                    state.variables[i],
+                    "finite");
+          return;
+        }
+      const double V = initial_rate->value(x);
+      require(std::isfinite(V) && V > 0, "Initial slip rate", V, "> 0 (m/s)");
+      AssertThrow(std::isfinite(initial_friction) && initial_friction > 0,
+                  ExcMessage("<Fault/Two state variables/Initial state 1> and "
+                             "<Initial state 2> are empty, so the initial "
+                             "state is the one for which the law holds at "
+                             "t = 0 with the fault's initial traction, but "
+                             "the fault is not in compression or carries no "
+                             "shear" +
+                             at.str() + ". Give the initial states."));
+      const double mu0 = c[0], A = c[1], Vc = c[6];
+      // th1 + th2 from mu(V_ini, th1 + th2) = initial friction.
+      const double sum =
+        logarithmic ? initial_friction - mu0 - A * std::log(V / Vc) :
+                      A * (std::log(2 * Vc / V) +
+                           StateEvolution::log_sinh(initial_friction / A)) -
+                        mu0;
+      const double B1 = c[2], B2 = c[3];
+      const double share = (B1 + B2 > 0) ? B1 / (B1 + B2) : 0.5;
+      state.variables    = {share * sum, (1 - share) * sum};
+    }
+
+
+
+    double
+    TwoStateVariables::coefficient(const Point<3> &x,
+                                   const State    &old,
+                                   const double    slip_increment,
+                                   const double    dt,
+                                   double         &derivative) const
+    {
+      const Constants c  = constants(x, old);
+      const double    V  = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
+      double          d1 = 0, d2 = 0;
+      const double    th1    = evolve(c, 0, old.variables.at(0), V, dt, d1);
+      const double    th2    = evolve(c, 1, old.variables.at(1), V, dt, d2);
+      double          dmu_dV = 0, dmu_dth = 0;
+      const double    mu = friction(c, V, th1 + th2, dmu_dV, dmu_dth);
+      derivative         = (dt > 0) ? (dmu_dV + dmu_dth * (d1 + d2)) / dt : 0.;
+      return mu;
+    }
+
+
+
+    double
+    TwoStateVariables::cohesion(const Point<3> &, const State &) const
+    {
+      return 0;
+    }
+
+
+
+    void
+    TwoStateVariables::update_state(const Point<3> &x,
+                                    const State    &old,
+                                    const double    slip_increment,
+                                    const double    dt,
+                                    State          &updated) const
+    {
+      Interface::update_state(x, old, slip_increment, dt, updated);
+      const Constants c = constants(x, old);
+      const double    V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
+      double          unused = 0;
+      updated.variables = {evolve(c, 0, old.variables.at(0), V, dt, unused),
+                           evolve(c, 1, old.variables.at(1), V, dt, unused)};
+    }
+
+    RUPTURE_REGISTER_FRICTION_LAW(
+      TwoStateVariables,
+      "two state variables",
+      "Ruina's rate-and-state law with two state variables (the review "
+      "paper's eq. 4.4), logarithmic or regularised.")
+  } // namespace Friction
+} // namespace rupture
