@@ -89,8 +89,10 @@ namespace rupture
     void
     declare_parameters(ParameterHandler &prm)
     {
+      // Linear slip weakening, the GeoFEM paper's law, is the default
+      // (the registry's first name would be the alphabetical first).
       prm.declare_entry("Friction law",
-                        registry().first_name(),
+                        "linear slip weakening",
                         Patterns::Selection(registry().selection()),
                         "The friction law of the fault. Available laws:" +
                           registry().descriptions());
