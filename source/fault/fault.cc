@@ -210,13 +210,13 @@ namespace rupture
       // traction solved together at each node, which it does not do yet.
       AssertThrow(!fault->split_node_method ||
                     !fault->friction_law->depends_on_slip_rate(),
-                  ExcMessage("<Fault/Friction law> = " +
-                             prm.get("Friction law") +
-                             " depends on the slip rate, which <Fault/Model> "
-                             "= traction at split nodes does not support "
-                             "yet. Use <Fault/Model> = penalty contact (with "
-                             "the implicit Newmark or quasi-static scheme), "
-                             "or a slip-weakening law."));
+                  ExcMessage(
+                    "<Fault/Friction law> = " + prm.get("Friction law") +
+                    " depends on the slip rate, which <Fault/Model> "
+                    "= traction at split nodes does not support "
+                    "yet. Use <Fault/Model> = penalty contact (with "
+                    "the implicit Newmark or quasi-static scheme), "
+                    "or a slip-weakening law."));
       prm.leave_subsection();
       return fault;
     }
