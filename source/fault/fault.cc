@@ -205,18 +205,6 @@ namespace rupture
                                        "Fault/Forced slip/Direction");
       prm.leave_subsection();
       fault->friction_law = Friction::create(prm);
-      // The split-node method evaluates friction at the slip of the
-      // predictor; a law of the slip rate needs the slip rate and the
-      // traction solved together at each node, which it does not do yet.
-      AssertThrow(!fault->split_node_method ||
-                    !fault->friction_law->depends_on_slip_rate(),
-                  ExcMessage(
-                    "<Fault/Friction law> = " + prm.get("Friction law") +
-                    " depends on the slip rate, which <Fault/Model> "
-                    "= traction at split nodes does not support "
-                    "yet. Use <Fault/Model> = penalty contact (with "
-                    "the implicit Newmark or quasi-static scheme), "
-                    "or a slip-weakening law."));
       prm.leave_subsection();
       return fault;
     }

@@ -226,6 +226,8 @@ namespace rupture
           else if (forced)
             r.status =
               (increment > 0) ? ContactStatus::slip : ContactStatus::stick;
+          else if (friction_law->depends_on_slip_rate())
+            T = rate_dependent_traction(pair, x, T, tn, inverse_sum, c, dt, r);
           else
             {
               const Tensor<1, dim> shear    = T - tn * n;
@@ -253,6 +255,98 @@ namespace rupture
             }
         }
       pair_dofs.scatter_add(forces, force.trilinos_vector()[0]);
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    Fault<dim>::rate_dependent_traction(const NodePair       &pair,
+                                        const Point<3>       &x,
+                                        const Tensor<1, dim> &stick_traction,
+                                        const double          tn,
+                                        const Tensor<1, dim> &inverse_sum,
+                                        const double          c,
+                                        const double          dt,
+                                        ContactResponse<dim> &r) const
+    {
+      // A traction below the stick traction by dtau along the shear
+      // direction e lets the pair slip over the next step at the rate
+      //   V = c dt A (e . (1/M+ + 1/M-) e) dtau = dtau / Z,
+      // so slip rate and traction solve together
+      //   g(V) = |T_stick,t| - Z V - (mu(V dt) p + cohesion) = 0,  V >= 0,
+      // with the law's coefficient of a step at that slip rate (the state
+      // evolved over the step with it). g(0) <= 0 sticks. Newton on V,
+      // safeguarded by bisection (geometric while the bracket spans
+      // decades: regularised laws slip at any shear, at rates from 1e-30
+      // m/s up).
+      const Tensor<1, dim> shear = stick_traction - tn * pair.normal;
+      const double         s     = shear.norm();
+      const double         p     = -tn;
+      Tensor<1, dim>       e;
+      double               inverse = 0;
+      if (s > 0)
+        {
+          e = shear / s;
+          for (unsigned int d = 0; d < dim; ++d)
+            inverse += inverse_sum[d] * e[d] * e[d];
+        }
+      const double cohesion = friction_law->cohesion(x, pair.state);
+      const double Z = (inverse > 0) ? 1. / (c * dt * pair.area * inverse) : 0.;
+      const auto g = [&](const double V, double &dg, double &mu, double &dmu) {
+        mu = friction_law->coefficient(x, pair.state, V * dt, dt, dmu);
+        dg = -Z - dmu * dt * p;
+        return s - Z * V - mu * p - cohesion;
+      };
+      double       dg = 0, mu = 0, dmu = 0;
+      const double g0 = g(0, dg, mu, dmu);
+      double       V  = 0;
+      if (g0 > 0 && Z > 0)
+        {
+          double lower = 0, upper = s / Z;
+          V                = upper;
+          double       gv  = g(V, dg, mu, dmu);
+          const double tol = 1e-13 * std::max(s, 1e-300);
+          for (unsigned int it = 0; it < 300 && std::abs(gv) > tol; ++it)
+            {
+              if (gv > 0)
+                lower = V;
+              else
+                upper = V;
+              double next = (dg < 0) ? V - gv / dg : -1;
+              if (!(next > lower && next < upper))
+                next = (upper > 1e3 * std::max(lower, 1e-30)) ?
+                         std::sqrt(std::max(lower, 1e-30) * upper) :
+                         0.5 * (lower + upper);
+              if (upper - lower <= 1e-15 * upper)
+                break;
+              V  = next;
+              gv = g(V, dg, mu, dmu);
+            }
+          // The slip rate is unique only while the impedance exceeds the
+          // law's weakening rate: g must fall through its root.
+          if (dg >= 0)
+            {
+              std::ostringstream message;
+              message << "The slip rate of the fault node at (" << pair.location
+                      << ") is not unique: the friction law weakens with the "
+                         "slip rate faster (d strength / dV = "
+                      << -dg - Z << " Pa s/m at V = " << V
+                      << " m/s) than the node's impedance Z = " << Z
+                      << " Pa s/m resists. Refine the mesh or reduce the time "
+                         "step (Z grows as 1/dt), or lower the law's "
+                         "weakening with the slip rate (the parameters of "
+                         "<Fault/Friction law>).";
+              AssertThrow(false, ExcMessage(message.str()));
+            }
+        }
+      else
+        g(0, dg, mu, dmu);
+      r.friction            = mu;
+      r.friction_derivative = dmu;
+      r.slip_increment      = V * dt;
+      r.status = (V > 0) ? ContactStatus::slip : ContactStatus::stick;
+      return tn * pair.normal + (s - Z * V) * e;
     }
 
 

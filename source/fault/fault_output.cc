@@ -418,6 +418,13 @@ namespace rupture
       scalar_field("rupture_time", [](const R &r) {
         return r.rupture_time < 0 ? 1e9 : r.rupture_time;
       });
+      // The friction law's state variables (e.g. log10_theta).
+      const std::vector<std::string> state_names =
+        fault.friction().state_names();
+      for (unsigned int i = 0; i < state_names.size(); ++i)
+        scalar_field(state_names[i], [i](const R &r) {
+          return (i < r.state_values.size()) ? r.state_values[i] : 0.;
+        });
       out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 
       std::ostringstream name;

@@ -46,6 +46,7 @@ namespace rupture
             r.friction      = pair.trial.friction;
             r.rupture_time  = pair.rupture_time;
             r.status        = static_cast<int>(pair.trial.status);
+            r.state_values  = friction_law->state_output(pair.state);
             mine.push_back(r);
           }
       const auto all = dealii::Utilities::MPI::gather(communicator, mine, 0);

@@ -309,7 +309,10 @@ namespace rupture
         "iteration to <Linear solver tolerance>. With <Preconditioner> = "
         "multigrid the cap is at most 1e-3: its first iteration or two "
         "already meet a loose tolerance, with directions that lead Newton "
-        "astray at the contact.");
+        "astray at the contact. Large rupture models want a tight value: "
+        "at 10 km cells the Northeast-Japan rupture steps took 172 Newton "
+        "iterations at 0.1 and 55 at 1e-5, five times less time "
+        "(doc/performance.md).");
     }
     prm.leave_subsection();
   }

@@ -86,13 +86,16 @@ namespace rupture
         double         friction     = 0;
         double         rupture_time = -1;
         int            status       = 0;
+        /// The friction law's state fields (Friction::Interface::
+        /// state_output()).
+        std::vector<double> state_values;
 
         template <class Archive>
         void
         serialize(Archive &ar, const unsigned int)
         {
           ar &key &location &normal &slip &slip_velocity &traction &slip_path
-            &friction &rupture_time &status;
+            &friction &rupture_time &status &state_values;
         }
       };
 
@@ -242,6 +245,13 @@ namespace rupture
        */
       std::vector<std::vector<types::global_dof_index>>
       gather_faces() const;
+
+      /// The friction law (for the names of its state fields).
+      const Friction::Interface &
+      friction() const
+      {
+        return *friction_law;
+      }
 
       /// A point of the fault plane (for output coordinates).
       const Point<dim> &
@@ -426,6 +436,21 @@ namespace rupture
       /// @p delay.
       Tensor<1, dim>
       imposed_slip(const NodePair &pair, const double delay) const;
+
+      /**
+       * The split-node traction of a pair under a friction law of the slip
+       * rate: slip rate and traction solved together (see the .cc file).
+       * Sets the friction, slip increment and status of @p r.
+       */
+      Tensor<1, dim>
+      rate_dependent_traction(const NodePair       &pair,
+                              const Point<3>       &x,
+                              const Tensor<1, dim> &stick_traction,
+                              const double          tn,
+                              const Tensor<1, dim> &inverse_sum,
+                              const double          c,
+                              const double          dt,
+                              ContactResponse<dim> &r) const;
 
       MPI_Comm communicator;
 

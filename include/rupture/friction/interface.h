@@ -121,6 +121,25 @@ namespace rupture
       enable_weakening(const bool enable);
 
       /**
+       * Names of the state variables the fault surface output shows (one
+       * field each, e.g. "log10_theta"); none for laws without state.
+       */
+      virtual std::vector<std::string>
+      state_names() const
+      {
+        return {};
+      }
+
+      /**
+       * The values of those fields for @p state.
+       */
+      virtual std::vector<double>
+      state_output(const State &) const
+      {
+        return {};
+      }
+
+      /**
        * Whether the friction coefficient depends on the slip rate (the slip
        * increment over dt) and not only on the slip path: rate-and-state
        * laws.

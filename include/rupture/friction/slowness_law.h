@@ -6,6 +6,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <array>
+#include <cmath>
 
 namespace rupture
 {
@@ -68,6 +69,18 @@ namespace rupture
       depends_on_slip_rate() const override
       {
         return true;
+      }
+
+      std::vector<std::string>
+      state_names() const override
+      {
+        return {"log10_theta"};
+      }
+
+      std::vector<double>
+      state_output(const State &state) const override
+      {
+        return {std::log10(state.variables.at(0))};
       }
 
       void

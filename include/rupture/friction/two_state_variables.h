@@ -6,6 +6,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <array>
+#include <cmath>
 
 namespace rupture
 {
@@ -64,6 +65,18 @@ namespace rupture
       depends_on_slip_rate() const override
       {
         return true;
+      }
+
+      std::vector<std::string>
+      state_names() const override
+      {
+        return {"theta_1", "theta_2"};
+      }
+
+      std::vector<double>
+      state_output(const State &state) const override
+      {
+        return {state.variables.at(0), state.variables.at(1)};
       }
 
       void
