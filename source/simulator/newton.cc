@@ -152,7 +152,12 @@ namespace rupture
                 // (a body near equilibrium), so the internal forces count.
                 apply_stiffness(old_u, scratch);
                 increment_constraints.set_zero(scratch);
-                reference = std::max({norm, scratch.l2_norm(), 1e-300});
+                // A prestressed fault at rest: the forces of its initial
+                // traction.
+                reference = std::max({norm,
+                                      scratch.l2_norm(),
+                                      fault->initial_force_norm(),
+                                      1e-300});
               }
             else
               {

@@ -207,7 +207,11 @@ namespace rupture
                         Patterns::Double(0, 1),
                         "Newton's method (with a fault) has converged when "
                         "the force residual has fallen below this fraction "
-                        "of its first value (or of the load) ...");
+                        "of the step's force scale: the largest of its "
+                        "first value, the internal forces of the last "
+                        "displacement and the nodal forces of the fault's "
+                        "initial traction (a prestressed fault at rest has "
+                        "a tiny first residual) ...");
       prm.declare_entry("Newton displacement tolerance",
                         "1e-6",
                         Patterns::Double(0, 1),

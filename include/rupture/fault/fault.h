@@ -358,6 +358,14 @@ namespace rupture
       unsigned int
       n_welded_nodes() const;
 
+      /**
+       * The l2 norm of the nodal forces A T_0 of the initial traction on
+       * both sides of every pair (a collective): a force scale of a
+       * prestressed fault at rest, where the residual alone is tiny.
+       */
+      double
+      initial_force_norm() const;
+
     private:
       struct NodePair
       {
