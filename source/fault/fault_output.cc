@@ -8,6 +8,7 @@
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
@@ -302,21 +303,35 @@ namespace rupture
         by_key[r.key] = &r;
       for (auto &s : stations)
         {
-          Tensor<1, dim> slip, rate, traction;
+          Tensor<1, dim>      slip, rate, traction;
+          double              normal = 0;
+          std::vector<double> state;
           for (unsigned int k = 0; k < s.nodes.size(); ++k)
             {
               const auto &r = *by_key.at(s.nodes[k]);
               slip += s.weights[k] * r.slip;
               rate += s.weights[k] * r.slip_velocity;
               traction += s.weights[k] * r.traction;
+              normal += s.weights[k] * (r.traction * r.normal);
+              state.resize(r.state_values.size());
+              for (unsigned int i = 0; i < state.size(); ++i)
+                state[i] += s.weights[k] * r.state_values[i];
             }
-          s.rows.push_back({{time,
-                             strike_component(slip),
-                             strike_component(rate),
-                             strike_component(traction) / 1e6,
-                             dip_component(slip),
-                             dip_component(rate),
-                             dip_component(traction) / 1e6}});
+          std::vector<double> row = {time,
+                                     strike_component(slip),
+                                     strike_component(rate),
+                                     strike_component(traction) / 1e6,
+                                     dip_component(slip),
+                                     dip_component(rate),
+                                     dip_component(traction) / 1e6};
+          // Laws with state: the SCEC rate-and-state columns, the normal
+          // stress and the state variables.
+          if (!state.empty())
+            {
+              row.push_back(normal / 1e6);
+              row.insert(row.end(), state.begin(), state.end());
+            }
+          s.rows.push_back(row);
         }
     }
 
@@ -474,10 +489,31 @@ namespace rupture
               << "# Column #4 = horizontal shear stress (MPa)\n"
               << "# Column #5 = vertical slip (m)\n"
               << "# Column #6 = vertical slip rate (m/s)\n"
-              << "# Column #7 = vertical shear stress (MPa)\n"
-              << "t h-slip h-slip-rate h-shear-stress v-slip v-slip-rate "
-                 "v-shear-stress\n"
-              << std::scientific << std::setprecision(7);
+              << "# Column #7 = vertical shear stress (MPa)\n";
+          // The SCEC rate-and-state format adds the normal stress and the
+          // state (log10 theta as "log-theta", or psi).
+          const std::vector<std::string> state_names =
+            fault.friction().state_names();
+          std::string header =
+            "t h-slip h-slip-rate h-shear-stress v-slip v-slip-rate "
+            "v-shear-stress";
+          if (!state_names.empty())
+            {
+              out << "# Column #8 = normal stress (MPa, negative in "
+                     "compression)\n";
+              header += " n-stress";
+              for (unsigned int i = 0; i < state_names.size(); ++i)
+                {
+                  std::string name = state_names[i];
+                  if (name == "log10_theta")
+                    name = "log-theta";
+                  std::replace(name.begin(), name.end(), '_', '-');
+                  out << "# Column #" << 9 + i << " = " << state_names[i]
+                      << "\n";
+                  header += " " + name;
+                }
+            }
+          out << header << "\n" << std::scientific << std::setprecision(7);
           for (const auto &row : s.rows)
             {
               for (unsigned int c = 0; c < row.size(); ++c)

@@ -16,8 +16,9 @@
 // oscillates about the reference by up to 3 % while the traction follows
 // the reference closely, and the penalty method starts 7 % slow in the
 // sudden onset at t = 0, so it is compared only at the steady state.)
-// Last, no spurious slip: TPV101's law and traction ratio with the initial
-// state computed from the traction at V_ini = 1e-12 must not slip.
+// The station file has the SCEC rate-and-state columns n-stress and
+// log-theta. Last, no spurious slip: TPV101's law and traction ratio with the
+// initial state computed from the traction at V_ini = 1e-12 must not slip.
 
 #include <deal.II/base/mpi.h>
 
@@ -91,24 +92,16 @@ main(int argc, char **argv)
   const unsigned int slip = 14, slip_rate = 15, shear = 21;
 
   const std::vector<std::string> law = {
-    "--set",
-    "Fault/Friction law=rate and state",
-    "--set",
-    "Fault/Rate and state/Direct effect=0.008",
-    "--set",
-    "Fault/Rate and state/Evolution effect=0.012",
-    "--set",
-    "Fault/Rate and state/Characteristic slip distance=0.1",
-    "--set",
-    "Fault/Rate and state/Reference friction coefficient=0.6",
-    "--set",
-    "Fault/Rate and state/Reference slip rate=1",
-    "--set",
-    "Fault/Rate and state/Initial state=1",
-    "--set",
-    "Fault/Initial traction=6.5; -10",
-    "--set",
-    "Time integration/End time=1.5"};
+    "--set", "Fault/Friction law=rate and state",
+    "--set", "Fault/Rate and state/Direct effect=0.008",
+    "--set", "Fault/Rate and state/Evolution effect=0.012",
+    "--set", "Fault/Rate and state/Characteristic slip distance=0.1",
+    "--set", "Fault/Rate and state/Reference friction coefficient=0.6",
+    "--set", "Fault/Rate and state/Reference slip rate=1",
+    "--set", "Fault/Rate and state/Initial state=1",
+    "--set", "Fault/Initial traction=6.5; -10",
+    "--set", "Time integration/End time=1.5",
+    "--set", "Fault/Output/Stations=fault: 0.025, 0"};
   const std::vector<std::vector<std::string>> methods = {
     {"--set", "Time integration/Time step=0.005"},
     {"--set",
@@ -141,6 +134,24 @@ main(int argc, char **argv)
           continue;
         }
       const auto rows = tests::read_statistics("output-plane-wave/statistics");
+      {
+        // The station file in the SCEC rate-and-state layout: n-stress
+        // (MPa) and log-theta, at the end theta = L / V = 0.1.
+        const std::string station =
+          tests::read_file("output-plane-wave/fault.dat");
+        const auto line = station.find("t h-slip");
+        const auto table =
+          tests::read_statistics("output-plane-wave/fault.dat");
+        const auto &last = table.back();
+        std::printf(
+          "  station columns: %s\n",
+          station.substr(line, station.find('\n', line) - line).c_str());
+        std::printf("  station at the end: n-stress %.6g MPa, log-theta "
+                    "within 0.01 of log10(L/V) = -1: %s\n",
+                    last.size() > 8 ? last[7] : 0.,
+                    last.size() > 8 && std::abs(last[8] + 1) < 0.01 ? "yes" :
+                                                                      "NO");
+      }
       for (unsigned int i = 0; i < 4; ++i)
         {
           // The first row at or after the time (the explicit step does not

@@ -92,7 +92,7 @@ namespace rupture
         Point<dim>                           location;
         std::vector<types::global_dof_index> nodes;
         std::vector<double>                  weights;
-        std::vector<std::array<double, 7>>   rows;
+        std::vector<std::vector<double>>     rows;
       };
 
       double
