@@ -372,6 +372,13 @@ namespace rupture
         for (const auto &pair : pairs)
           pair_list.emplace_back(pair.minus, pair.plus);
         contact_blocks.reinit(pair_list, locally_owned_dofs, communicator);
+        // The nodal forces A T_0 on both sides of every pair.
+        double force_square = 0;
+        for (const auto &pair : pairs)
+          force_square +=
+            2 * pair.area * pair.area * pair.initial_traction.norm_square();
+        initial_force_scale =
+          std::sqrt(dealii::Utilities::MPI::sum(force_square, communicator));
         if (split_node_method)
           AssertThrow(dealii::Utilities::MPI::max(constrained ? 1 : 0,
                                                   communicator) == 0,

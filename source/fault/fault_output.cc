@@ -96,23 +96,23 @@ namespace rupture
     {
       if (interval_text.empty())
         return volume_interval;
-      double      value = 0;
-      std::size_t end   = 0;
+      std::vector<double> values;
       try
         {
-          value = std::stod(interval_text, &end);
+          values = Utilities::parse_doubles(interval_text,
+                                            "Fault/Output/Output interval");
         }
-      catch (...)
+      catch (const ExceptionBase &)
         {
-          end = 0;
+          // Not a number: the message below says what is allowed.
         }
-      AssertThrow(end == interval_text.size() && std::isfinite(value),
+      AssertThrow(values.size() == 1 && std::isfinite(values[0]),
                   ExcMessage("<Fault/Output/Output interval> must be empty "
                              "(the volume's output interval) or one finite "
                              "number of seconds (0: every step, negative: "
                              "never), but is <" +
                              interval_text + ">."));
-      return value;
+      return values[0];
     }
 
 

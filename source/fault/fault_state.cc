@@ -237,18 +237,6 @@ namespace rupture
 
 
 
-    template <int dim>
-    double
-    Fault<dim>::initial_force_norm() const
-    {
-      double sum = 0;
-      for (const auto &pair : pairs)
-        sum += 2 * pair.area * pair.area * pair.initial_traction.norm_square();
-      return std::sqrt(dealii::Utilities::MPI::sum(sum, communicator));
-    }
-
-
-
     template class Fault<2>;
     template class Fault<3>;
   } // namespace Fault

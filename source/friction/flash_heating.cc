@@ -1,10 +1,10 @@
 #include <rupture/base/utilities.h>
 #include <rupture/friction/flash_heating.h>
+#include <rupture/friction/law_utilities.h>
 #include <rupture/friction/state_evolution.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace rupture
 {
@@ -89,18 +89,6 @@ namespace rupture
           initial_state = parse("Initial state");
       }
       prm.leave_subsection();
-    }
-
-
-
-    FlashHeating::Constants
-    FlashHeating::constants(const Point<3> &x, const State &state) const
-    {
-      Constants c;
-      for (unsigned int i = 0; i < 7; ++i)
-        c[i] = (state.parameters.size() == 7) ? state.parameters[i] :
-                                                functions[i]->value(x);
-      return c;
     }
 
 
@@ -201,18 +189,14 @@ namespace rupture
                                    const double    initial_friction,
                                    State          &state) const
     {
-      state                = State();
-      const Constants    c = constants(x, state);
-      std::ostringstream at;
-      at << " at the fault point (" << x << ")";
-      const auto require = [&](const bool         ok,
+      state                     = State();
+      const Constants   c       = LawUtilities::constants(functions, x, state);
+      const std::string at      = LawUtilities::at_point(x);
+      const auto        require = [&](const bool         ok,
                                const std::string &entry,
                                const double       value,
                                const std::string &allowed) {
-        AssertThrow(ok,
-                    ExcMessage("<Fault/Flash heating/" + entry + "> is " +
-                               std::to_string(value) + at.str() +
-                               ", but it must be " + allowed + "."));
+        LawUtilities::require(ok, "Flash heating", entry, value, x, allowed);
       };
       for (const unsigned int i : {0u, 2u, 4u, 5u, 6u})
         require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
@@ -240,10 +224,10 @@ namespace rupture
                         "holds at t = 0 with the fault's initial traction, "
                         "but the fault is not in compression or carries no "
                         "shear" +
-                        at.str() + ". Give an <Initial state>."));
+                        at + ". Give an <Initial state>."));
           // a asinh(V / (2 V0) e^(psi/a)) = mu_ini.
-          psi = c[0] * (std::log(2 * c[4] / V) +
-                        StateEvolution::log_sinh(initial_friction / c[0]));
+          psi =
+            StateEvolution::regularized_state(c[0], c[4], V, initial_friction);
         }
       state.variables = {psi};
     }
@@ -257,15 +241,17 @@ namespace rupture
                               const double    dt,
                               double         &derivative) const
     {
-      const Constants c = constants(x, old);
-      const double    V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
-      double          dpsi_dV  = 0;
-      const double    psi      = evolve(c, old.variables.at(0), V, dt, dpsi_dV);
-      double          dmu_dV   = 0;
-      double          dmu_dpsi = 0;
-      const double    mu       = friction(c, V, psi, dmu_dV, dmu_dpsi);
-      derivative = (dt > 0) ? (dmu_dV + dmu_dpsi * dpsi_dV) / dt : 0.;
-      return mu;
+      const Constants c = LawUtilities::constants(functions, x, old);
+      return LawUtilities::step_coefficient(
+        slip_increment,
+        dt,
+        [&](const double V, double &ds_dV) {
+          return evolve(c, old.variables.at(0), V, dt, ds_dV);
+        },
+        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
+          return friction(c, V, s, dmu_dV, dmu_ds);
+        },
+        derivative);
     }
 
 
@@ -286,14 +272,13 @@ namespace rupture
                                State          &updated) const
     {
       Interface::update_state(x, old, slip_increment, dt, updated);
-      const Constants c      = constants(x, old);
+      const Constants c      = LawUtilities::constants(functions, x, old);
       double          unused = 0;
-      updated.variables      = {
-             evolve(c,
-               old.variables.at(0),
-               (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.),
-               dt,
-               unused)};
+      updated.variables      = {evolve(c,
+                                  old.variables.at(0),
+                                  LawUtilities::slip_rate(slip_increment, dt),
+                                  dt,
+                                  unused)};
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

@@ -1,10 +1,10 @@
 #include <rupture/base/utilities.h>
+#include <rupture/friction/law_utilities.h>
 #include <rupture/friction/rate_and_state.h>
 #include <rupture/friction/state_evolution.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace rupture
 {
@@ -16,14 +16,15 @@ namespace rupture
       /// no value at V = 0.
       constexpr double minimum_log_rate = 1e-30;
 
-      std::string
-      at(const Point<3> &x)
-      {
-        std::ostringstream s;
-        s << " at the fault point (" << x << ")";
-        return s.str();
-      }
+      const std::array<const char *, 5> names = {
+        "Direct effect",
+        "Evolution effect",
+        "Characteristic slip distance",
+        "Reference friction coefficient",
+        "Reference slip rate"};
     } // namespace
+
+    using LawUtilities::at_point;
 
 
 
@@ -109,34 +110,13 @@ namespace rupture
                                               s + entry,
                                               "x,y,z");
         };
-        direct_effect      = parse("Direct effect");
-        evolution_effect   = parse("Evolution effect");
-        slip_distance      = parse("Characteristic slip distance");
-        reference_friction = parse("Reference friction coefficient");
-        reference_rate     = parse("Reference slip rate");
-        initial_rate       = parse("Initial slip rate");
+        for (unsigned int i = 0; i < 5; ++i)
+          functions[i] = parse(names[i]);
+        initial_rate = parse("Initial slip rate");
         if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
           initial_state = parse("Initial state");
       }
       prm.leave_subsection();
-    }
-
-
-
-    RateAndState::Constants
-    RateAndState::constants(const Point<3> &x, const State &state) const
-    {
-      if (state.parameters.size() == 5)
-        return {state.parameters[0],
-                state.parameters[1],
-                state.parameters[2],
-                state.parameters[3],
-                state.parameters[4]};
-      return {direct_effect->value(x),
-              evolution_effect->value(x),
-              slip_distance->value(x),
-              reference_friction->value(x),
-              reference_rate->value(x)};
     }
 
 
@@ -146,33 +126,22 @@ namespace rupture
                                    const double    initial_friction,
                                    State          &state) const
     {
-      state                        = State();
-      const Constants c            = constants(x, state);
+      state             = State();
+      const Constants c = LawUtilities::constants(functions, x, state);
       const auto [a, b, L, f0, V0] = c;
-      const std::string where      = at(x);
+      const std::string where      = at_point(x);
       const std::string s          = "<Fault/Rate and state/";
       const auto        require    = [&](const bool         ok,
                                const std::string &entry,
                                const double       value,
                                const std::string &allowed) {
-        AssertThrow(ok,
-                    ExcMessage(s + entry + "> is " + std::to_string(value) +
-                               where + ", but it must be " + allowed + "."));
+        LawUtilities::require(ok, "Rate and state", entry, value, x, allowed);
       };
-      require(std::isfinite(a) && a > 0, "Direct effect", a, "> 0");
-      require(std::isfinite(b) && b >= 0, "Evolution effect", b, ">= 0");
-      require(std::isfinite(L) && L > 0,
-              "Characteristic slip distance",
-              L,
-              "> 0 (m)");
-      require(std::isfinite(f0),
-              "Reference friction coefficient",
-              f0,
-              "a finite number");
-      require(std::isfinite(V0) && V0 > 0,
-              "Reference slip rate",
-              V0,
-              "> 0 (m/s)");
+      require(std::isfinite(a) && a > 0, names[0], a, "> 0");
+      require(std::isfinite(b) && b >= 0, names[1], b, ">= 0");
+      require(std::isfinite(L) && L > 0, names[2], L, "> 0 (m)");
+      require(std::isfinite(f0), names[3], f0, "a finite number");
+      require(std::isfinite(V0) && V0 > 0, names[4], V0, "> 0 (m/s)");
       state.parameters = {a, b, L, f0, V0};
 
       double theta = 0;
@@ -208,11 +177,8 @@ namespace rupture
             log_state = (initial_friction - f0 - a * std::log(V / V0)) / b;
           else
             {
-              // a asinh(V/(2 V0) e^(Psi/a)) = mu, so
-              // Psi = a ln(2 V0 / V sinh(mu/a)), with
-              // ln sinh(y) = y + ln((1 - e^(-2y)) / 2).
-              const double y = initial_friction / a;
-              AssertThrow(y > 0,
+              // a asinh(V/(2 V0) e^(Psi/a)) = mu, solved for Psi.
+              AssertThrow(initial_friction > 0,
                           ExcMessage(s +
                                      "Initial state> is empty, and the "
                                      "fault's initial shear traction "
@@ -220,9 +186,9 @@ namespace rupture
                                      where +
                                      ": the regularised law then needs "
                                      "V_ini = 0. Give an <Initial state>."));
-              const double log_sinh = StateEvolution::log_sinh(y);
-              const double psi      = a * (std::log(2 * V0 / V) + log_sinh);
-              log_state             = (psi - f0) / b;
+              const double psi =
+                StateEvolution::regularized_state(a, V0, V, initial_friction);
+              log_state = (psi - f0) / b;
             }
           AssertThrow(b > 0 || std::abs(log_state) < 1e300,
                       ExcMessage(s + "Evolution effect> is 0" + where +
@@ -312,37 +278,27 @@ namespace rupture
 
 
     double
-    RateAndState::steady_state_friction(const Constants &c,
-                                        const double     V) const
-    {
-      const double L     = c[2];
-      double       theta = L / std::max(V, minimum_log_rate);
-      double       dV = 0, dtheta = 0;
-      return friction(c, V, theta, dV, dtheta);
-    }
-
-
-
-    double
     RateAndState::coefficient(const Point<3> &x,
                               const State    &old,
                               const double    slip_increment,
                               const double    dt,
                               double         &derivative) const
     {
-      const Constants c = constants(x, old);
+      const Constants c = LawUtilities::constants(functions, x, old);
       AssertThrow(old.variables.size() == 1,
                   ExcMessage("The rate-and-state law was used at a point "
                              "whose state was not initialised" +
-                             at(x) + "."));
-      const double V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
-      double       dtheta_dV  = 0;
-      const double theta      = evolve(c, old.variables[0], V, dt, dtheta_dV);
-      double       dmu_dV     = 0;
-      double       dmu_dtheta = 0;
-      const double mu         = friction(c, V, theta, dmu_dV, dmu_dtheta);
-      derivative = (dt > 0) ? (dmu_dV + dmu_dtheta * dtheta_dV) / dt : 0.;
-      return mu;
+                             at_point(x) + "."));
+      return LawUtilities::step_coefficient(
+        slip_increment,
+        dt,
+        [&](const double V, double &dtheta_dV) {
+          return evolve(c, old.variables[0], V, dt, dtheta_dV);
+        },
+        [&](const double V, const double theta, double &dV, double &dtheta) {
+          return friction(c, V, theta, dV, dtheta);
+        },
+        derivative);
     }
 
 
@@ -363,20 +319,22 @@ namespace rupture
                                State          &updated) const
     {
       Interface::update_state(x, old, slip_increment, dt, updated);
-      const Constants c = constants(x, old);
-      const double    V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
+      const Constants c      = LawUtilities::constants(functions, x, old);
+      const double    V      = LawUtilities::slip_rate(slip_increment, dt);
       double          unused = 0;
       updated.variables      = {evolve(c, old.variables[0], V, dt, unused)};
-      AssertThrow(
-        std::isfinite(updated.variables[0]) && updated.variables[0] > 0,
-        ExcMessage("The rate-and-state state variable theta left "
-                   "the positive finite numbers" +
-                   at(x) + " (theta was " + std::to_string(old.variables[0]) +
-                   " s, slip "
-                   "rate " +
-                   std::to_string(V) + " m/s, L = " + std::to_string(c[2]) +
-                   " m, <Fault/Rate and state/Characteristic slip "
-                   "distance>)."));
+      AssertThrow(std::isfinite(updated.variables[0]) &&
+                    updated.variables[0] > 0,
+                  ExcMessage("The rate-and-state state variable theta left "
+                             "the positive finite numbers" +
+                             at_point(x) + " (theta was " +
+                             std::to_string(old.variables[0]) +
+                             " s, slip "
+                             "rate " +
+                             std::to_string(V) +
+                             " m/s, L = " + std::to_string(c[2]) +
+                             " m, <Fault/Rate and state/Characteristic slip "
+                             "distance>)."));
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

@@ -1,10 +1,10 @@
 #include <rupture/base/utilities.h>
+#include <rupture/friction/law_utilities.h>
 #include <rupture/friction/slowness_law.h>
 #include <rupture/friction/state_evolution.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace rupture
 {
@@ -98,18 +98,6 @@ namespace rupture
 
 
 
-    SlownessLaw::Constants
-    SlownessLaw::constants(const Point<3> &x, const State &state) const
-    {
-      Constants c;
-      for (unsigned int i = 0; i < 8; ++i)
-        c[i] = (state.parameters.size() == 8) ? state.parameters[i] :
-                                                functions[i]->value(x);
-      return c;
-    }
-
-
-
     double
     SlownessLaw::friction(const Constants &c,
                           const double     V,
@@ -154,18 +142,14 @@ namespace rupture
                                   const double    initial_friction,
                                   State          &state) const
     {
-      state                = State();
-      const Constants    c = constants(x, state);
-      std::ostringstream at;
-      at << " at the fault point (" << x << ")";
-      const auto require = [&](const bool         ok,
+      state                     = State();
+      const Constants   c       = LawUtilities::constants(functions, x, state);
+      const std::string at      = LawUtilities::at_point(x);
+      const auto        require = [&](const bool         ok,
                                const std::string &entry,
                                const double       value,
                                const std::string &allowed) {
-        AssertThrow(ok,
-                    ExcMessage("<Fault/Slowness law/" + entry + "> is " +
-                               std::to_string(value) + at.str() +
-                               ", but it must be " + allowed + "."));
+        LawUtilities::require(ok, "Slowness law", entry, value, x, allowed);
       };
       require(std::isfinite(c[0]), names[0], c[0], "a finite number");
       for (const unsigned int i : {1u, 2u, 6u, 7u})
@@ -196,7 +180,7 @@ namespace rupture
                         "initial state is the one for which the law holds at "
                         "t = 0 with the fault's initial traction, but the "
                         "fault is not in compression" +
-                        at.str() + ". Give an <Initial state>."));
+                        at + ". Give an <Initial state>."));
           // B ln(1 + theta/theta0) = mu_ini - mu(V, theta = 0).
           double       unused_V = 0, unused_theta = 0;
           const double rest =
@@ -209,7 +193,7 @@ namespace rupture
                       ExcMessage(
                         "<Fault/Slowness law/Initial state> is empty, but no "
                         "state theta >= 0 makes the law hold at t = 0" +
-                        at.str() +
+                        at +
                         ": the initial traction gives |tau|/|sigma| "
                         "= " +
                         std::to_string(initial_friction) +
@@ -231,15 +215,17 @@ namespace rupture
                              const double    dt,
                              double         &derivative) const
     {
-      const Constants c = constants(x, old);
-      const double    V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
-      double          dtheta_dV = 0;
-      const double    theta  = evolve(c, old.variables.at(0), V, dt, dtheta_dV);
-      double          dmu_dV = 0;
-      double          dmu_dtheta = 0;
-      const double    mu         = friction(c, V, theta, dmu_dV, dmu_dtheta);
-      derivative = (dt > 0) ? (dmu_dV + dmu_dtheta * dtheta_dV) / dt : 0.;
-      return mu;
+      const Constants c = LawUtilities::constants(functions, x, old);
+      return LawUtilities::step_coefficient(
+        slip_increment,
+        dt,
+        [&](const double V, double &ds_dV) {
+          return evolve(c, old.variables.at(0), V, dt, ds_dV);
+        },
+        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
+          return friction(c, V, s, dmu_dV, dmu_ds);
+        },
+        derivative);
     }
 
 
@@ -260,14 +246,13 @@ namespace rupture
                               State          &updated) const
     {
       Interface::update_state(x, old, slip_increment, dt, updated);
-      const Constants c      = constants(x, old);
+      const Constants c      = LawUtilities::constants(functions, x, old);
       double          unused = 0;
-      updated.variables      = {
-             evolve(c,
-               old.variables.at(0),
-               (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.),
-               dt,
-               unused)};
+      updated.variables      = {evolve(c,
+                                  old.variables.at(0),
+                                  LawUtilities::slip_rate(slip_increment, dt),
+                                  dt,
+                                  unused)};
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

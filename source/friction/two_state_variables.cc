@@ -1,10 +1,10 @@
 #include <rupture/base/utilities.h>
+#include <rupture/friction/law_utilities.h>
 #include <rupture/friction/state_evolution.h>
 #include <rupture/friction/two_state_variables.h>
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace rupture
 {
@@ -112,18 +112,6 @@ namespace rupture
 
 
 
-    TwoStateVariables::Constants
-    TwoStateVariables::constants(const Point<3> &x, const State &state) const
-    {
-      Constants c;
-      for (unsigned int i = 0; i < 7; ++i)
-        c[i] = (state.parameters.size() == 7) ? state.parameters[i] :
-                                                functions[i]->value(x);
-      return c;
-    }
-
-
-
     double
     TwoStateVariables::evolve(const Constants   &c,
                               const unsigned int i,
@@ -177,18 +165,15 @@ namespace rupture
                                         const double    initial_friction,
                                         State          &state) const
     {
-      state                = State();
-      const Constants    c = constants(x, state);
-      std::ostringstream at;
-      at << " at the fault point (" << x << ")";
-      const auto require = [&](const bool         ok,
+      state                     = State();
+      const Constants   c       = LawUtilities::constants(functions, x, state);
+      const std::string at      = LawUtilities::at_point(x);
+      const auto        require = [&](const bool         ok,
                                const std::string &entry,
                                const double       value,
                                const std::string &allowed) {
-        AssertThrow(ok,
-                    ExcMessage("<Fault/Two state variables/" + entry + "> is " +
-                               std::to_string(value) + at.str() +
-                               ", but it must be " + allowed + "."));
+        LawUtilities::require(
+          ok, "Two state variables", entry, value, x, allowed);
       };
       require(std::isfinite(c[0]), names[0], c[0], "a finite number");
       for (const unsigned int i : {1u, 4u, 5u, 6u})
@@ -217,14 +202,13 @@ namespace rupture
                              "t = 0 with the fault's initial traction, but "
                              "the fault is not in compression or carries no "
                              "shear" +
-                             at.str() + ". Give the initial states."));
+                             at + ". Give the initial states."));
       const double mu0 = c[0], A = c[1], Vc = c[6];
       // th1 + th2 from mu(V_ini, th1 + th2) = initial friction.
       const double sum =
-        logarithmic ? initial_friction - mu0 - A * std::log(V / Vc) :
-                      A * (std::log(2 * Vc / V) +
-                           StateEvolution::log_sinh(initial_friction / A)) -
-                        mu0;
+        logarithmic ?
+          initial_friction - mu0 - A * std::log(V / Vc) :
+          StateEvolution::regularized_state(A, Vc, V, initial_friction) - mu0;
       const double B1 = c[2], B2 = c[3];
       const double share = (B1 + B2 > 0) ? B1 / (B1 + B2) : 0.5;
       state.variables    = {share * sum, (1 - share) * sum};
@@ -239,15 +223,22 @@ namespace rupture
                                    const double    dt,
                                    double         &derivative) const
     {
-      const Constants c  = constants(x, old);
-      const double    V  = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
-      double          d1 = 0, d2 = 0;
-      const double    th1    = evolve(c, 0, old.variables.at(0), V, dt, d1);
-      const double    th2    = evolve(c, 1, old.variables.at(1), V, dt, d2);
-      double          dmu_dV = 0, dmu_dth = 0;
-      const double    mu = friction(c, V, th1 + th2, dmu_dV, dmu_dth);
-      derivative         = (dt > 0) ? (dmu_dV + dmu_dth * (d1 + d2)) / dt : 0.;
-      return mu;
+      const Constants c = LawUtilities::constants(functions, x, old);
+      return LawUtilities::step_coefficient(
+        slip_increment,
+        dt,
+        [&](const double V, double &ds_dV) {
+          // mu depends on the states through their sum.
+          double       d1 = 0, d2 = 0;
+          const double sum = evolve(c, 0, old.variables.at(0), V, dt, d1) +
+                             evolve(c, 1, old.variables.at(1), V, dt, d2);
+          ds_dV = d1 + d2;
+          return sum;
+        },
+        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
+          return friction(c, V, s, dmu_dV, dmu_ds);
+        },
+        derivative);
     }
 
 
@@ -268,8 +259,8 @@ namespace rupture
                                     State          &updated) const
     {
       Interface::update_state(x, old, slip_increment, dt, updated);
-      const Constants c = constants(x, old);
-      const double    V = (dt > 0 ? std::max(slip_increment, 0.) / dt : 0.);
+      const Constants c      = LawUtilities::constants(functions, x, old);
+      const double    V      = LawUtilities::slip_rate(slip_increment, dt);
       double          unused = 0;
       updated.variables = {evolve(c, 0, old.variables.at(0), V, dt, unused),
                            evolve(c, 1, old.variables.at(1), V, dt, unused)};

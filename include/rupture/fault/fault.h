@@ -360,11 +360,14 @@ namespace rupture
 
       /**
        * The l2 norm of the nodal forces A T_0 of the initial traction on
-       * both sides of every pair (a collective): a force scale of a
+       * both sides of every pair (from setup()): a force scale of a
        * prestressed fault at rest, where the residual alone is tiny.
        */
       double
-      initial_force_norm() const;
+      initial_force_norm() const
+      {
+        return initial_force_scale;
+      }
 
     private:
       struct NodePair
@@ -494,9 +497,10 @@ namespace rupture
       Operators::PairBlocks<dim> contact_blocks;
       /// Fault faces of locally owned cells, as vertex keys.
       std::vector<std::vector<types::global_dof_index>> owned_faces;
-      unsigned int                                      n_global_split    = 0;
-      unsigned int                                      n_global_welded   = 0;
-      double                                            frictional_energy = 0;
+      double                                            initial_force_scale = 0;
+      unsigned int                                      n_global_split      = 0;
+      unsigned int                                      n_global_welded     = 0;
+      double                                            frictional_energy   = 0;
     };
   } // namespace Fault
 } // namespace rupture

@@ -117,9 +117,6 @@ namespace rupture
                double          &dmu_dpsi);
 
     private:
-      Constants
-      constants(const Point<3> &x, const State &state) const;
-
       std::array<std::unique_ptr<FunctionParser<3>>, 7> functions;
       std::unique_ptr<FunctionParser<3>>                initial_state;
       std::unique_ptr<FunctionParser<3>>                initial_rate;

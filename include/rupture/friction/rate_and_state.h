@@ -141,25 +141,13 @@ namespace rupture
                double          &dmu_dV,
                double          &dmu_dtheta) const;
 
-      /**
-       * The steady-state friction coefficient at slip rate @p V.
-       */
-      double
-      steady_state_friction(const Constants &c, const double V) const;
-
     private:
-      Constants
-      constants(const Point<3> &x, const State &state) const;
-
-      Formulation                        formulation = Formulation::regularized;
-      EvolutionLaw                       evolution   = EvolutionLaw::aging;
-      std::unique_ptr<FunctionParser<3>> direct_effect;
-      std::unique_ptr<FunctionParser<3>> evolution_effect;
-      std::unique_ptr<FunctionParser<3>> slip_distance;
-      std::unique_ptr<FunctionParser<3>> reference_friction;
-      std::unique_ptr<FunctionParser<3>> reference_rate;
-      std::unique_ptr<FunctionParser<3>> initial_state;
-      std::unique_ptr<FunctionParser<3>> initial_rate;
+      Formulation  formulation = Formulation::regularized;
+      EvolutionLaw evolution   = EvolutionLaw::aging;
+      /// a, b, L, f0 and V0 as functions of position.
+      std::array<std::unique_ptr<FunctionParser<3>>, 5> functions;
+      std::unique_ptr<FunctionParser<3>>                initial_state;
+      std::unique_ptr<FunctionParser<3>>                initial_rate;
     };
   } // namespace Friction
 } // namespace rupture

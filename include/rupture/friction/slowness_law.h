@@ -111,9 +111,6 @@ namespace rupture
              double          &dtheta_dV);
 
     private:
-      Constants
-      constants(const Point<3> &x, const State &state) const;
-
       std::array<std::unique_ptr<FunctionParser<3>>, 8> functions;
       std::unique_ptr<FunctionParser<3>>                initial_state;
       std::unique_ptr<FunctionParser<3>>                initial_rate;

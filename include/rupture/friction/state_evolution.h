@@ -104,6 +104,20 @@ namespace rupture
         dmu_dpsi = z / root;
         return a * std::asinh(z);
       }
+
+      /**
+       * The inverse of regularized_friction() in psi: the psi for which
+       * a asinh(V / (2 V0) exp(psi / a)) = @p mu at V > 0, mu > 0, i.e.
+       * psi = a (ln(2 V0 / V) + ln sinh(mu / a)).
+       */
+      inline double
+      regularized_state(const double a,
+                        const double V0,
+                        const double V,
+                        const double mu)
+      {
+        return a * (std::log(2 * V0 / V) + log_sinh(mu / a));
+      }
     } // namespace StateEvolution
   }   // namespace Friction
 } // namespace rupture

@@ -108,9 +108,6 @@ namespace rupture
                double          &dmu_dth) const;
 
     private:
-      Constants
-      constants(const Point<3> &x, const State &state) const;
-
       bool                                              logarithmic = false;
       std::array<std::unique_ptr<FunctionParser<3>>, 7> functions;
       std::array<std::unique_ptr<FunctionParser<3>>, 2> initial_state;
