@@ -180,6 +180,11 @@ namespace rupture
 
 
 
+    template std::unique_ptr<FunctionParser<1>>
+    parse_function<1>(const std::string &,
+                      const unsigned int,
+                      const std::string &,
+                      const std::string &);
     template std::unique_ptr<FunctionParser<2>>
     parse_function<2>(const std::string &,
                       const unsigned int,

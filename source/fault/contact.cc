@@ -49,17 +49,23 @@ namespace rupture
       const Tensor<1, dim> trial =
         t0_t + p_t * (delta_t - projector * old_plastic_slip);
       const double trial_norm = trial.norm();
-      const double cohesion   = law.cohesion(x, old_state);
       r.trial_traction        = trial;
 
-      double mu = law.coefficient(x, old_state, 0., dt, derivative);
+      // The strength S(l) after a slip increment l, with its derivatives
+      // dS/dl and mu = dS/d pressure (the friction coefficient for laws of
+      // one).
+      const auto strength = [&](const double l, double &dS, double &mu) {
+        return law.strength(x, old_state, l, dt, pressure, dS, mu);
+      };
+      double       mu = 0, dS = 0;
+      const double S  = strength(0., dS, mu);
       // Weakening at the start of the slip steeper than the penalty: g
       // below grows with the slip there, so the root lies beyond the
       // weakening and the traction drops to the residual strength at once.
-      const bool snaps = (-derivative * pressure >= p_t);
+      const bool snaps = (-dS >= p_t);
       // A point exactly at its strength (as after a converged slip step)
       // sticks: unloading must start from the stiff branch.
-      if (trial_norm <= (mu * pressure + cohesion) * (1 + 1e-10))
+      if (trial_norm <= S * (1 + 1e-10))
         {
           r.status       = ContactStatus::stick;
           r.traction     = normal_traction * n + trial;
@@ -68,15 +74,18 @@ namespace rupture
           r.friction     = mu;
           return r;
         }
+      // The penalty is the node's impedance to slip: per unit slip rate
+      // p_t dt (the law may know that its weakening can exceed it).
+      law.check_uniqueness(x, old_state, pressure, p_t * dt);
 
       // Slip: find the slip increment l in (0, |T_trial|/p_t] with
-      // g(l) = |T_trial| - p_t l - mu(l) |T_n| - c = 0, by Newton's method
+      // g(l) = |T_trial| - p_t l - S(l) = 0, by Newton's method
       // safeguarded with bisection (g(0) > 0 >= g(upper)).
       const auto g = [&](const double l, double &dg) {
-        double       dmu = 0;
-        const double m   = law.coefficient(x, old_state, l, dt, dmu);
-        dg               = -p_t - dmu * pressure;
-        return trial_norm - p_t * l - m * pressure - cohesion;
+        double       dSl = 0, m = 0;
+        const double Sl  = strength(l, dSl, m);
+        dg               = -p_t - dSl;
+        return trial_norm - p_t * l - Sl;
       };
       double lower = 0, upper = trial_norm / p_t, l = 0;
       for (unsigned int it = 0; it < 100; ++it)
@@ -97,10 +106,11 @@ namespace rupture
             break;
         }
 
-      mu = law.coefficient(x, old_state, l, dt, derivative);
+      strength(l, dS, mu);
       const double         tau = trial_norm - p_t * l;
       const Tensor<1, dim> e   = trial / trial_norm;
-      const double         k   = -derivative * pressure;
+      const double         k   = -dS;
+      derivative               = (pressure > 0) ? dS / pressure : 0.;
 
       r.status              = ContactStatus::slip;
       r.slip_increment      = l;
@@ -112,7 +122,7 @@ namespace rupture
       // Consistent tangent:
       //   D = p_n n n + tau p_t / |T_trial| (I - e e - n n)
       //       + e (x) (-k e - mu p_n n) / (1 - k / p_t),
-      // with k = -mu'(l) |T_n| the weakening slope.
+      // with k = -dS/dl the weakening slope and mu = dS/d|T_n|.
       const double denominator = 1 - k / p_t;
       r.unstable_softening     = (denominator <= 0) || snaps;
       const Tensor<2, dim> ee  = outer_product(e, e);

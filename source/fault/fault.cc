@@ -103,6 +103,30 @@ namespace rupture
           "(, z), components separated by ';'. Empty for zero, as when the "
           "stress comes from a loading step. Used by the benchmarks, e.g. "
           "TPV3: '70e6; -120e6; 0' for a plane with normal (0, 1, 0).");
+        prm.enter_subsection("Traction perturbation");
+        {
+          prm.declare_entry(
+            "Traction",
+            "",
+            Patterns::Anything(),
+            "A traction (Pa) added to <Fault/Initial traction> in the "
+            "dynamic phase to nucleate a rupture, as a vector function of x, "
+            "y (, z), components separated by ';' (the same convention). It "
+            "is multiplied by <Time function>. Empty for none. E.g. the "
+            "smooth pulse of SCEC TPV101, Delta tau_0 F(r) with "
+            "F = exp(r^2 / (r^2 - R^2)) for r < R = 3 km: '(x^2 + (z + "
+            "7500)^2 < 9e6) ? 25e6 * exp((x^2 + (z + 7500)^2) / (x^2 + (z + "
+            "7500)^2 - 9e6)) : 0; 0; 0'.");
+          prm.declare_entry(
+            "Time function",
+            "1",
+            Patterns::Anything(),
+            "G(t), the factor of <Traction> as a function of t, the time "
+            "(s) since the start of the dynamic phase, e.g. SCEC's smooth "
+            "ramp over T = 1 s: '(t <= 0) ? 0 : ((t < 1) ? exp((t - 1)^2 / "
+            "(t * (t - 2))) : 1)'. Must be finite.");
+        }
+        prm.leave_subsection();
         prm.enter_subsection("Forced slip");
         {
           prm.declare_entry(
@@ -192,6 +216,22 @@ namespace rupture
                                        variables);
       fault->initial_traction = Utilities::parse_function<dim>(
         prm.get("Initial traction"), dim, "Fault/Initial traction", variables);
+      prm.enter_subsection("Traction perturbation");
+      if (!dealii::Utilities::trim(prm.get("Traction")).empty())
+        {
+          fault->traction_perturbation =
+            Utilities::parse_function<dim>(prm.get("Traction"),
+                                           dim,
+                                           "Fault/Traction perturbation/"
+                                           "Traction",
+                                           variables);
+          fault->perturbation_time_function = Utilities::parse_function<1>(
+            prm.get("Time function"),
+            1,
+            "Fault/Traction perturbation/Time function",
+            "t");
+        }
+      prm.leave_subsection();
       prm.enter_subsection("Forced slip");
       fault->forced_region = Utilities::parse_function<dim>(
         prm.get("Region"), 1, "Fault/Forced slip/Region", variables);
@@ -312,6 +352,11 @@ namespace rupture
             for (unsigned int c = 0; c < dim; ++c)
               pair.initial_traction[c] =
                 initial_traction->value(pair.location, c);
+            pair.background_traction = pair.initial_traction;
+            if (traction_perturbation)
+              for (unsigned int c = 0; c < dim; ++c)
+                pair.perturbation[c] =
+                  traction_perturbation->value(pair.location, c);
             pair.normal_penalty     = normal_penalty->value(pair.location);
             pair.tangential_penalty = tangential_penalty->value(pair.location);
             std::ostringstream where, values;

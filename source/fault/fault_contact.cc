@@ -291,18 +291,22 @@ namespace rupture
           for (unsigned int d = 0; d < dim; ++d)
             inverse += inverse_sum[d] * e[d] * e[d];
         }
-      const double cohesion = friction_law->cohesion(x, pair.state);
       const double Z = (inverse > 0) ? 1. / (c * dt * pair.area * inverse) : 0.;
+      // mu is the strength's derivative with respect to the pressure (the
+      // friction coefficient), dmu that of mu with the slip increment.
       const auto g = [&](const double V, double &dg, double &mu, double &dmu) {
-        mu = friction_law->coefficient(x, pair.state, V * dt, dt, dmu);
-        dg = -Z - dmu * dt * p;
-        return s - Z * V - mu * p - cohesion;
+        double       dS = 0;
+        const double S  = friction_law->strength(x, pair.state, V * dt, dt, p, dS, mu);
+        dmu = (p > 0) ? dS / p : 0.;
+        dg  = -Z - dS * dt;
+        return s - Z * V - S;
       };
       double       dg = 0, mu = 0, dmu = 0;
       const double g0 = g(0, dg, mu, dmu);
       double       V  = 0;
       if (g0 > 0 && Z > 0)
         {
+          friction_law->check_uniqueness(x, pair.state, p, Z);
           double lower = 0, upper = s / Z;
           V                = upper;
           double       gv  = g(V, dg, mu, dmu);
@@ -380,11 +384,15 @@ namespace rupture
     {
       for (auto &pair : pairs)
         {
+          const Tensor<1, dim> t =
+            pair.trial.traction -
+            (pair.trial.traction * pair.normal) * pair.normal;
           Friction::State updated;
           friction_law->update_state(to_3d(pair.location),
                                      pair.state,
                                      pair.trial.slip_increment,
                                      dt,
+                                     t.norm(),
                                      updated);
           pair.slip_velocity = (pair.trial_slip - pair.slip) / dt;
           updated.slip_rate  = pair.slip_velocity.norm();
@@ -406,9 +414,6 @@ namespace rupture
                 time - dynamic_start - dt + std::clamp(w, 0., 1.) * dt;
             }
           pair.rupture_rate = rate;
-          const Tensor<1, dim> t =
-            pair.trial.traction -
-            (pair.trial.traction * pair.normal) * pair.normal;
           frictional_energy += pair.area * t.norm() * pair.trial.slip_increment;
           pair.state        = updated;
           pair.plastic_slip = pair.trial.plastic_slip;

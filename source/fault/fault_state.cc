@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -91,6 +92,24 @@ namespace rupture
     {
       friction_law->set_time(time);
       current_time = time;
+      if (traction_perturbation)
+        {
+          // The perturbation acts in the dynamic phase only, as forced
+          // slip.
+          const double t = time - dynamic_start;
+          perturbation_time_function->set_time(0);
+          const double g =
+            forced_slip_active ? perturbation_time_function->value(Point<1>(t)) :
+                                 0.;
+          std::ostringstream message;
+          message << "<Fault/Traction perturbation/Time function> must be "
+                     "finite, but is "
+                  << g << " at t = " << t << " s.";
+          AssertThrow(std::isfinite(g), ExcMessage(message.str()));
+          for (auto &pair : pairs)
+            pair.initial_traction =
+              pair.background_traction + g * pair.perturbation;
+        }
     }
 
 
@@ -214,6 +233,26 @@ namespace rupture
         dealii::Utilities::MPI::sum(frictional_energy, communicator);
       s.unstable_softening =
         dealii::Utilities::MPI::sum(unstable, communicator) > 0;
+      const unsigned int n_states = friction_law->state_names().size();
+      s.state_minimum.assign(n_states, std::numeric_limits<double>::max());
+      s.state_maximum.assign(n_states, std::numeric_limits<double>::lowest());
+      for (const auto &pair : pairs)
+        {
+          const std::vector<double> values =
+            friction_law->state_output(pair.state);
+          for (unsigned int i = 0; i < n_states; ++i)
+            {
+              s.state_minimum[i] = std::min(s.state_minimum[i], values[i]);
+              s.state_maximum[i] = std::max(s.state_maximum[i], values[i]);
+            }
+        }
+      for (unsigned int i = 0; i < n_states; ++i)
+        {
+          s.state_minimum[i] =
+            dealii::Utilities::MPI::min(s.state_minimum[i], communicator);
+          s.state_maximum[i] =
+            dealii::Utilities::MPI::max(s.state_maximum[i], communicator);
+        }
       return s;
     }
 

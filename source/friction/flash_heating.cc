@@ -269,9 +269,11 @@ namespace rupture
                                const State    &old,
                                const double    slip_increment,
                                const double    dt,
+                               const double    shear_traction,
                                State          &updated) const
     {
-      Interface::update_state(x, old, slip_increment, dt, updated);
+      Interface::update_state(
+        x, old, slip_increment, dt, shear_traction, updated);
       const Constants c      = LawUtilities::constants(functions, x, old);
       double          unused = 0;
       updated.variables      = {evolve(c,

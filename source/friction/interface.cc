@@ -15,12 +15,40 @@ namespace rupture
 
 
 
+    double
+    Interface::strength(const Point<3> &x,
+                        const State    &old,
+                        const double    slip_increment,
+                        const double    dt,
+                        const double    pressure,
+                        double         &derivative_increment,
+                        double         &derivative_pressure) const
+    {
+      double       dmu = 0;
+      const double mu  = coefficient(x, old, slip_increment, dt, dmu);
+      derivative_increment = dmu * pressure;
+      derivative_pressure  = mu;
+      return mu * pressure + cohesion(x, old);
+    }
+
+
+
+    void
+    Interface::check_uniqueness(const Point<3> &,
+                                const State &,
+                                const double,
+                                const double) const
+    {}
+
+
+
     void
     Interface::update_state(const Point<3> &,
                             const State &old,
                             const double slip_increment,
                             const double dt,
-                            State       &updated) const
+                            const double,
+                            State &updated) const
     {
       updated           = old;
       updated.slip_path = old.slip_path + slip_increment;

@@ -161,6 +161,12 @@ namespace rupture
     if (has_absorbing)
       columns.emplace_back("Energy absorbed at the absorbing boundaries (J): "
                            "part of the dissipated energy");
+    // The friction law's state variables, after all others.
+    if (fault)
+      for (const auto &name : fault->friction().state_names())
+        for (const std::string which : {"Minimum", "Maximum"})
+          columns.push_back(which + " of the friction state " + name +
+                            " over the fault");
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
     if (fault)
@@ -483,6 +489,15 @@ namespace rupture
       }
     if (has_absorbing)
       row.push_back(absorbed_energy);
+    if (fault)
+      {
+        const Fault::Statistics f = fault->statistics();
+        for (unsigned int i = 0; i < f.state_minimum.size(); ++i)
+          {
+            row.push_back(f.state_minimum[i]);
+            row.push_back(f.state_maximum[i]);
+          }
+      }
     return row;
   }
 

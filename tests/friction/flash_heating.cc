@@ -80,7 +80,7 @@ main(int argc, char **argv)
       for (unsigned int i = 0; i < 200; ++i)
         {
           State next;
-          law->update_state(origin, state, V * dt, dt, next);
+          law->update_state(origin, state, V * dt, dt, 0., next);
           state = next;
         }
       double       d  = 0;
@@ -107,7 +107,7 @@ main(int argc, char **argv)
         for (double t = dt; t <= end * (1 + 1e-12); t += dt)
           {
             State next;
-            law->update_state(origin, state, V * dt, dt, next);
+            law->update_state(origin, state, V * dt, dt, 0., next);
             state            = next;
             const double psi = psi2 + (psi1 - psi2) * std::exp(-V * t / 0.4);
             error = std::max(error, relative_error(state.variables[0], psi));
@@ -170,13 +170,13 @@ main(int argc, char **argv)
   {
     State  state = start(*law, 0.5), next;
     double d     = 0;
-    law->update_state(origin, state, 0, 1e12, next);
+    law->update_state(origin, state, 0, 1e12, 0., next);
     double mu = law->coefficient(origin, state, 0, 1e12, d);
     std::printf("   V = 0 for 1e12 s: psi = %.6f, mu = %g, finite: %s\n",
                 next.variables[0],
                 mu,
                 std::isfinite(d) ? "yes" : "no");
-    law->update_state(origin, state, 1000., 1., next);
+    law->update_state(origin, state, 1000., 1., 0., next);
     mu = law->coefficient(origin, state, 1000., 1., d);
     std::printf("   V = 1000 m/s for 1 s: mu = %.6f (f_ss = %.6f), finite: "
                 "%s\n",

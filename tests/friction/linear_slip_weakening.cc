@@ -64,7 +64,7 @@ main(int argc, char **argv)
   // The state after a step: the slip path accumulates.
   rupture::Friction::State old, updated;
   old.slip_path = 0.3;
-  law->update_state(far, old, 0.2, 0.1, updated);
+  law->update_state(far, old, 0.2, 0.1, 0., updated);
   std::printf("slip path after 0.2 m more: %.3f m, slip rate %.3f m/s\n",
               updated.slip_path,
               updated.slip_rate);

@@ -115,7 +115,7 @@ main(int argc, char **argv)
             for (unsigned int i = 0; i < 200; ++i)
               {
                 State next;
-                law->update_state(origin, state, V * dt, dt, next);
+                law->update_state(origin, state, V * dt, dt, 0., next);
                 state = next;
               }
             double       d  = 0;
@@ -171,7 +171,7 @@ main(int argc, char **argv)
               double       d  = 0;
               const double mu = law->coefficient(origin, state, V2 * dt, dt, d);
               State        next;
-              law->update_state(origin, state, V2 * dt, dt, next);
+              law->update_state(origin, state, V2 * dt, dt, 0., next);
               state = next;
               const double theta =
                 theta_after_step(evolution == "aging", theta1, V2, t);
@@ -267,7 +267,7 @@ main(int argc, char **argv)
       state.variables = {1.};
       State  next;
       double d = 0;
-      law->update_state(origin, state, 0, 1e12, next);
+      law->update_state(origin, state, 0, 1e12, 0., next);
       const double mu0 = law->coefficient(origin, state, 0, 1e12, d);
       std::printf("   %-6s V = 0 for 1e12 s: theta = %.6e s, mu = %g, "
                   "finite: %s\n",
@@ -276,7 +276,7 @@ main(int argc, char **argv)
                   mu0,
                   std::isfinite(next.variables[0]) && std::isfinite(d) ? "yes" :
                                                                          "no");
-      law->update_state(origin, state, 1000., 1., next);
+      law->update_state(origin, state, 1000., 1., 0., next);
       const double mu1 = law->coefficient(origin, state, 1000., 1., d);
       std::printf("   %-6s V = 1000 m/s for 1 s: theta = %.6e s (L/V = "
                   "2e-05), mu = %.6f, finite: %s\n",

@@ -89,7 +89,7 @@ namespace
     for (unsigned int i = 0; i < n; ++i)
       {
         State next;
-        law.update_state(origin, state, V * dt, dt, next);
+        law.update_state(origin, state, V * dt, dt, 0., next);
         state = next;
       }
     return state;

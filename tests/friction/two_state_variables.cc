@@ -71,7 +71,7 @@ main(int argc, char **argv)
         for (unsigned int i = 0; i < 300; ++i)
           {
             State next;
-            law->update_state(origin, state, V * dt, dt, next);
+            law->update_state(origin, state, V * dt, dt, 0., next);
             state = next;
           }
         double       d         = 0;
@@ -102,7 +102,7 @@ main(int argc, char **argv)
             double       d  = 0;
             const double mu = law->coefficient(origin, state, V2 * dt, dt, d);
             State        next;
-            law->update_state(origin, state, V2 * dt, dt, next);
+            law->update_state(origin, state, V2 * dt, dt, 0., next);
             state              = next;
             const double th1   = ss * (1 - std::exp(-V2 * t / 0.01));
             const double th2   = ss * (1 - std::exp(-V2 * t / 0.1));

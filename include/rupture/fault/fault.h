@@ -43,6 +43,10 @@ namespace rupture
       /// compression) and of the magnitude of the shear traction (Pa).
       double mean_normal_traction = 0;
       double mean_shear_traction  = 0;
+      /// The smallest and largest values over the fault of the friction
+      /// law's state outputs (Friction::Interface::state_names()).
+      std::vector<double> state_minimum;
+      std::vector<double> state_maximum;
     };
 
     /**
@@ -377,7 +381,13 @@ namespace rupture
         Point<dim>                               location;
         double                                   area = 0;
         Tensor<1, dim>                           normal;
-        Tensor<1, dim>                           initial_traction;
+        /// The traction the displacement does not carry: the initial
+        /// traction plus the perturbation at the current time.
+        Tensor<1, dim> initial_traction;
+        /// <Fault/Initial traction> here, and <Fault/Traction
+        /// perturbation/Traction>.
+        Tensor<1, dim> background_traction;
+        Tensor<1, dim> perturbation;
         double                                   normal_penalty     = 0;
         double                                   tangential_penalty = 0;
         double                                   shear_modulus      = 0;
@@ -475,6 +485,9 @@ namespace rupture
       std::unique_ptr<FunctionParser<dim>> normal_penalty;
       std::unique_ptr<FunctionParser<dim>> tangential_penalty;
       std::unique_ptr<FunctionParser<dim>> initial_traction;
+      /// Fault/Traction perturbation: null without one.
+      std::unique_ptr<FunctionParser<dim>> traction_perturbation;
+      std::unique_ptr<FunctionParser<1>>   perturbation_time_function;
       std::unique_ptr<Friction::Interface> friction_law;
       std::unique_ptr<FunctionParser<dim>> forced_region;
       std::unique_ptr<FunctionParser<dim>> forced_slip;

@@ -84,6 +84,7 @@ namespace rupture
                    const State    &old,
                    const double    slip_increment,
                    const double    dt,
+                   const double    shear_traction,
                    State          &updated) const override;
 
       /// {a, b, L, f0, V0, f_w, V_w}.

@@ -90,13 +90,51 @@ namespace rupture
       cohesion(const Point<3> &x, const State &state) const = 0;
 
       /**
-       * The state after the step.
+       * The shear strength (Pa) of a point pressed by the compressive normal
+       * traction @p pressure (>= 0, Pa) after a slip increment
+       * @p slip_increment in a step @p dt from the state @p old, and its
+       * derivatives with respect to the slip increment (Pa/m) and to the
+       * pressure. The default is the law's friction coefficient times the
+       * pressure plus the cohesion; a law whose strength is not of that
+       * form (Cochard-Madariaga rate weakening, which does not depend on
+       * the normal traction) overrides it.
+       */
+      virtual double
+      strength(const Point<3> &x,
+               const State    &old,
+               const double    slip_increment,
+               const double    dt,
+               const double    pressure,
+               double         &derivative_increment,
+               double         &derivative_pressure) const;
+
+      /**
+       * A step's slip rate V solves
+       *   |T_stick| - Z V = strength(V dt),
+       * with Z (Pa s/m) the impedance of the node. It has one solution only
+       * while Z exceeds the law's fastest weakening, max(-d strength/dV).
+       * Laws that know that bound check it here and throw, naming the point,
+       * the parameters and what to change; the default checks nothing (the
+       * fault still diagnoses a root at which the strength falls faster
+       * than Z).
+       */
+      virtual void
+      check_uniqueness(const Point<3> &x,
+                       const State    &old,
+                       const double    pressure,
+                       const double    impedance) const;
+
+      /**
+       * The state after the step, in which the fault carried the shear
+       * traction @p shear_traction (Pa, magnitude) over the slip increment:
+       * laws whose state follows the frictional heating use it.
        */
       virtual void
       update_state(const Point<3> &x,
                    const State    &old,
                    const double    slip_increment,
                    const double    dt,
+                   const double    shear_traction,
                    State          &updated) const;
 
       /**

@@ -113,6 +113,7 @@ namespace rupture
                    const State    &old,
                    const double    slip_increment,
                    const double    dt,
+                   const double    shear_traction,
                    State          &updated) const override;
 
       /**

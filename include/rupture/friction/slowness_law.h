@@ -88,6 +88,7 @@ namespace rupture
                    const State    &old,
                    const double    slip_increment,
                    const double    dt,
+                   const double    shear_traction,
                    State          &updated) const override;
 
       /// {mu0, A, B, L, Vinf, theta0, V0, V1}.

@@ -84,6 +84,7 @@ namespace rupture
                    const State    &old,
                    const double    slip_increment,
                    const double    dt,
+                   const double    shear_traction,
                    State          &updated) const override;
 
       /// {mu0, A, B1, B2, d1, d2, Vc}.

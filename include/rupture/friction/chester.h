@@ -1,0 +1,158 @@
+#ifndef rupture_friction_chester_h
+#define rupture_friction_chester_h
+
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <array>
+#include <memory>
+
+namespace rupture
+{
+  namespace Friction
+  {
+    /**
+     * Chester's temperature-dependent rate-and-state friction (the review
+     * paper's eq. 4.7 and 4.8) with Ruina's dimensionless state theta and
+     * the fault temperature T (K) as state variables:
+     *
+     *   mu = mu0 + A [ln(V / V_c) + Q_A / R (1/T - 1/T*)] + B theta,
+     *   d theta / dt = -(V / d_c) [theta + ln(V / V_c)
+     *                              + Q_B / R (1/T - 1/T*)],
+     *
+     * with the gas constant R. At T = T* this is Ruina's slip law. The
+     * regularised form (default) replaces mu0 + A ln(V/V_c) + ... by
+     *   mu = A asinh(V / (2 V_c) exp(Psi / A)),
+     *   Psi = mu0 + A Q_A / R (1/T - 1/T*) + B theta,
+     * which equals the logarithmic one when V >> V_c exp(-Psi/A) and is 0
+     * at V = 0, as in the SCEC benchmarks.
+     *
+     * The paper gives no equation for T. Here frictional heating tau V
+     * warms a shear zone of heat capacity H = rho c w per unit fault area
+     * (J/(m^2 K)), which loses heat to a reservoir at T_r with the
+     * relaxation time t_c (the idealised heat flow):
+     *   dT/dt = tau V / H - (T - T_r) / t_c.
+     *
+     * Within a step the slip rate V is constant. The state equation is
+     * then linear in theta, integrated exactly:
+     *   theta_new = theta_ss + (theta - theta_ss) e^(-V dt / d_c),
+     * theta_ss = -ln(V / V_c) - Q_B / R (1/T - 1/T*), and the coefficient
+     * of the step is mu(V, theta_new(V)) at the temperature at the start of
+     * the step. After the step the temperature equation, linear in T with
+     * the step's traction and slip rate, is integrated exactly too:
+     *   T_new = T_inf + (T - T_inf) e^(-dt / t_c),  T_inf = T_r + tau V t_c / H.
+     * The friction thus sees the temperature one step late, which is
+     * accurate while a step warms the fault by much less than
+     * R T^2 / Q_A, the warming that changes mu by A.
+     *
+     * State variables {theta, T}; parameters
+     * {A, B, d_c, mu0, V_c, Q_A, Q_B, T*, T_r, H, t_c}.
+     */
+    class Chester : public Interface
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      void
+      parse_parameters(ParameterHandler &prm) override;
+
+      using Interface::initialize_state;
+
+      void
+      initialize_state(const Point<3> &x,
+                       const double    initial_friction,
+                       State          &state) const override;
+
+      double
+      coefficient(const Point<3> &x,
+                  const State    &old,
+                  const double    slip_increment,
+                  const double    dt,
+                  double         &derivative) const override;
+
+      double
+      cohesion(const Point<3> &x, const State &state) const override;
+
+      bool
+      depends_on_slip_rate() const override
+      {
+        return true;
+      }
+
+      std::vector<std::string>
+      state_names() const override
+      {
+        return {"theta", "temperature"};
+      }
+
+      std::vector<double>
+      state_output(const State &state) const override
+      {
+        return state.variables;
+      }
+
+      void
+      update_state(const Point<3> &x,
+                   const State    &old,
+                   const double    slip_increment,
+                   const double    dt,
+                   const double    shear_traction,
+                   State          &updated) const override;
+
+      /// The gas constant R (J/(mol K)).
+      static constexpr double gas_constant = 8.314462618;
+
+      /// {A, B, d_c, mu0, V_c, Q_A, Q_B, T*, T_r, H, t_c}.
+      using Constants = std::array<double, 11>;
+
+      /// Q / R (1/T - 1/T*), the temperature term of an enthalpy Q.
+      static double
+      arrhenius(const Constants &c, const double Q, const double T);
+
+      /// theta_ss(V, T) and its derivative in V.
+      static double
+      steady_state(const Constants &c,
+                   const double     V,
+                   const double     T,
+                   double          &derivative);
+
+      /// theta after a step @p dt at the constant slip rate @p V and
+      /// temperature @p T, and d theta_new / dV.
+      static double
+      evolve(const Constants &c,
+             const double     theta,
+             const double     V,
+             const double     T,
+             const double     dt,
+             double          &dtheta_dV);
+
+      /// The temperature after a step @p dt with the frictional heating
+      /// @p heating = tau V (W/m^2).
+      static double
+      heat(const Constants &c,
+           const double     T,
+           const double     heating,
+           const double     dt);
+
+      /// mu(V, theta, T) and its partial derivatives in V and theta.
+      double
+      friction(const Constants &c,
+               const double     V,
+               const double     theta,
+               const double     T,
+               double          &dmu_dV,
+               double          &dmu_dtheta) const;
+
+    private:
+      bool regularized = true;
+      std::array<std::unique_ptr<FunctionParser<3>>, 11> functions;
+      std::unique_ptr<FunctionParser<3>>                  initial_state;
+      std::unique_ptr<FunctionParser<3>>                  initial_rate;
+      std::unique_ptr<FunctionParser<3>>                  initial_temperature;
+    };
+  } // namespace Friction
+} // namespace rupture
+
+#endif

@@ -1,0 +1,352 @@
+#include <rupture/base/utilities.h>
+#include <rupture/friction/chester.h>
+#include <rupture/friction/law_utilities.h>
+#include <rupture/friction/state_evolution.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rupture
+{
+  namespace Friction
+  {
+    namespace
+    {
+      /// theta_ss and the logarithmic form have no value at V = 0: they
+      /// are taken at V >= this rate (m/s).
+      constexpr double minimum_rate = 1e-30;
+
+      const std::array<const char *, 11> names = {
+        "Direct effect",
+        "Evolution effect",
+        "Characteristic slip distance",
+        "Reference friction coefficient",
+        "Reference slip rate",
+        "Direct activation enthalpy",
+        "Evolution activation enthalpy",
+        "Reference temperature",
+        "Reservoir temperature",
+        "Heat capacity per area",
+        "Heat relaxation time"};
+    } // namespace
+
+
+
+    void
+    Chester::declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Chester");
+      {
+        prm.declare_entry(
+          "Formulation",
+          "regularized",
+          Patterns::Selection("regularized|logarithmic"),
+          "regularized: mu = A asinh(V / (2 V_c) exp(Psi / A)), finite at "
+          "V = 0; logarithmic: the review's eq. 4.7 as written, "
+          "mu = Psi + A ln(V / V_c), taken at V >= 1e-30 m/s.");
+        const std::array<const char *, 11> defaults = {"0.01",
+                                                       "0.015",
+                                                       "0.4",
+                                                       "0.6",
+                                                       "1e-6",
+                                                       "1.3e5",
+                                                       "1.3e5",
+                                                       "573",
+                                                       "573",
+                                                       "2.7e4",
+                                                       "1"};
+        const std::array<const char *, 11> help = {
+          "A, the direct effect, as a function of x, y, z (m; in 2-D z = 0). "
+          "> 0.",
+          "B, the evolution effect (the weight of the dimensionless state "
+          "theta), as a function of x, y, z. >= 0.",
+          "d_c (m), the slip over which theta evolves, as a function of x, y, "
+          "z. > 0.",
+          "mu0, the steady-state friction coefficient at V_c and T*, as a "
+          "function of x, y, z.",
+          "V_c (m/s), the reference slip rate, as a function of x, y, z. > 0.",
+          "Q_A (J/mol), the apparent activation enthalpy of the direct "
+          "effect, as a function of x, y, z.",
+          "Q_B (J/mol), the apparent activation enthalpy of the evolution "
+          "effect, as a function of x, y, z.",
+          "T* (K), the temperature at which the law is Ruina's, as a "
+          "function of x, y, z. > 0.",
+          "T_r (K), the temperature the fault relaxes to, as a function of x, "
+          "y, z. > 0.",
+          "H = rho c w (J/(m^2 K)), the heat capacity per unit fault area of "
+          "the shear zone that frictional heating warms (e.g. 2.7e6 J/(m^3 "
+          "K) times a width of 10 mm), as a function of x, y, z. > 0.",
+          "t_c (s), the time over which the shear zone's temperature relaxes "
+          "to T_r (about w^2 / thermal diffusivity), as a function of x, y, "
+          "z. > 0."};
+        for (unsigned int i = 0; i < 11; ++i)
+          prm.declare_entry(names[i],
+                            defaults[i],
+                            Patterns::Anything(),
+                            help[i]);
+        prm.declare_entry("Initial temperature",
+                          "573",
+                          Patterns::Anything(),
+                          "T (K) at t = 0, as a function of x, y, z. > 0.");
+        prm.declare_entry(
+          "Initial state",
+          "",
+          Patterns::Anything(),
+          "theta at t = 0 as a function of x, y, z. Empty: the state for "
+          "which the law holds at t = 0 with the fault's initial traction, "
+          "the <Initial slip rate> and the <Initial temperature>.");
+        prm.declare_entry("Initial slip rate",
+                          "1e-12",
+                          Patterns::Anything(),
+                          "V_ini (m/s), the slip rate that defines the "
+                          "initial state when <Initial state> is empty, as a "
+                          "function of x, y, z. > 0.");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Chester::parse_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Chester");
+      {
+        regularized      = (prm.get("Formulation") == "regularized");
+        const auto parse = [&](const std::string &entry) {
+          return Utilities::parse_function<3>(prm.get(entry),
+                                              1,
+                                              "Fault/Chester/" + entry,
+                                              "x,y,z");
+        };
+        for (unsigned int i = 0; i < 11; ++i)
+          functions[i] = parse(names[i]);
+        initial_temperature = parse("Initial temperature");
+        initial_rate        = parse("Initial slip rate");
+        if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
+          initial_state = parse("Initial state");
+      }
+      prm.leave_subsection();
+    }
+
+
+
+    double
+    Chester::arrhenius(const Constants &c, const double Q, const double T)
+    {
+      return Q / gas_constant * (1. / T - 1. / c[7]);
+    }
+
+
+
+    double
+    Chester::steady_state(const Constants &c,
+                          const double     V,
+                          const double     T,
+                          double          &derivative)
+    {
+      const double v = std::max(V, minimum_rate);
+      derivative     = (V >= minimum_rate) ? -1. / v : 0.;
+      return -std::log(v / c[4]) - arrhenius(c, c[6], T);
+    }
+
+
+
+    double
+    Chester::evolve(const Constants &c,
+                    const double     theta,
+                    const double     V,
+                    const double     T,
+                    const double     dt,
+                    double          &dtheta_dV)
+    {
+      const double d_c = c[2];
+      if (V <= 0)
+        {
+          // No slip, no evolution; the rate of change with V is the limit
+          // V -> 0 at the smallest rate theta_ss allows.
+          double       unused = 0;
+          const double ss     = steady_state(c, minimum_rate, T, unused);
+          dtheta_dV           = (ss - theta - 1.) * dt / d_c;
+          return theta;
+        }
+      const double x   = V * dt / d_c;
+      const double e   = std::exp(-x);
+      const double w   = -std::expm1(-x); // 1 - e^-x
+      double       dss = 0;
+      const double ss  = steady_state(c, V, T, dss);
+      dtheta_dV        = (ss - theta) * e * dt / d_c + w * dss;
+      return theta + (ss - theta) * w;
+    }
+
+
+
+    double
+    Chester::heat(const Constants &c,
+                  const double     T,
+                  const double     heating,
+                  const double     dt)
+    {
+      const double T_r = c[8], H = c[9], t_c = c[10];
+      // T_new = T + (T_inf - T)(1 - e^(-dt/t_c)), T_inf = T_r + q t_c / H.
+      const double w = -std::expm1(-dt / t_c);
+      return T + (T_r - T) * w + heating / H * t_c * w;
+    }
+
+
+
+    double
+    Chester::friction(const Constants &c,
+                      const double     V,
+                      const double     theta,
+                      const double     T,
+                      double          &dmu_dV,
+                      double          &dmu_dtheta) const
+    {
+      const double A = c[0], B = c[1], V_c = c[4];
+      const double psi = c[3] + A * arrhenius(c, c[5], T) + B * theta;
+      if (regularized)
+        {
+          double       dpsi = 0;
+          const double mu =
+            StateEvolution::regularized_friction(A, V_c, V, psi, dmu_dV, dpsi);
+          dmu_dtheta = dpsi * B;
+          return mu;
+        }
+      const double v = std::max(V, minimum_rate);
+      dmu_dV         = (V >= minimum_rate) ? A / v : 0.;
+      dmu_dtheta     = B;
+      return psi + A * std::log(v / V_c);
+    }
+
+
+
+    void
+    Chester::initialize_state(const Point<3> &x,
+                              const double    initial_friction,
+                              State          &state) const
+    {
+      state             = State();
+      const Constants c = LawUtilities::constants(functions, x, state);
+      const auto      require = [&](const bool         ok,
+                               const std::string &entry,
+                               const double       value,
+                               const std::string &allowed) {
+        LawUtilities::require(ok, "Chester", entry, value, x, allowed);
+      };
+      for (const unsigned int i : {0u, 2u, 4u, 7u, 8u, 9u, 10u})
+        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
+      for (const unsigned int i : {3u, 5u, 6u})
+        require(std::isfinite(c[i]), names[i], c[i], "a finite number");
+      require(std::isfinite(c[1]) && c[1] >= 0, names[1], c[1], ">= 0");
+      state.parameters.assign(c.begin(), c.end());
+
+      const double T = initial_temperature->value(x);
+      require(std::isfinite(T) && T > 0, "Initial temperature", T, "> 0 (K)");
+      double theta = 0;
+      if (initial_state)
+        {
+          theta = initial_state->value(x);
+          require(std::isfinite(theta), "Initial state", theta, "finite");
+        }
+      else
+        {
+          const double V = initial_rate->value(x);
+          require(std::isfinite(V) && V > 0,
+                  "Initial slip rate",
+                  V,
+                  "> 0 (m/s)");
+          AssertThrow(
+            std::isfinite(initial_friction) && initial_friction > 0 &&
+              c[1] > 0,
+            ExcMessage("<Fault/Chester/Initial state> is empty, so the "
+                       "initial state is the one for which the law holds at "
+                       "t = 0 with the fault's initial traction, but the "
+                       "fault is not in compression, carries no shear or has "
+                       "no evolution effect (B = 0)" +
+                       LawUtilities::at_point(x) +
+                       ". Give an <Initial state>."));
+          // Psi for which mu(V_ini, Psi) = mu_ini, then theta from Psi.
+          const double psi =
+            regularized ?
+              StateEvolution::regularized_state(c[0], c[4], V, initial_friction) :
+              initial_friction - c[0] * std::log(V / c[4]);
+          theta = (psi - c[3] - c[0] * arrhenius(c, c[5], T)) / c[1];
+          require(std::isfinite(theta),
+                  "Initial slip rate",
+                  V,
+                  "a rate at which the initial friction is reached with a "
+                  "finite state");
+        }
+      state.variables = {theta, T};
+    }
+
+
+
+    double
+    Chester::coefficient(const Point<3> &x,
+                         const State    &old,
+                         const double    slip_increment,
+                         const double    dt,
+                         double         &derivative) const
+    {
+      const Constants c = LawUtilities::constants(functions, x, old);
+      const double    T = old.variables.at(1);
+      return LawUtilities::step_coefficient(
+        slip_increment,
+        dt,
+        [&](const double V, double &ds_dV) {
+          return evolve(c, old.variables[0], V, T, dt, ds_dV);
+        },
+        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
+          return friction(c, V, s, T, dmu_dV, dmu_ds);
+        },
+        derivative);
+    }
+
+
+
+    double
+    Chester::cohesion(const Point<3> &, const State &) const
+    {
+      return 0;
+    }
+
+
+
+    void
+    Chester::update_state(const Point<3> &x,
+                          const State    &old,
+                          const double    slip_increment,
+                          const double    dt,
+                          const double    shear_traction,
+                          State          &updated) const
+    {
+      Interface::update_state(
+        x, old, slip_increment, dt, shear_traction, updated);
+      const Constants c      = LawUtilities::constants(functions, x, old);
+      const double    V      = LawUtilities::slip_rate(slip_increment, dt);
+      const double    T      = old.variables.at(1);
+      double          unused = 0;
+      const double    theta  = evolve(c, old.variables[0], V, T, dt, unused);
+      const double    T_new =
+        (dt > 0) ? heat(c, T, std::abs(shear_traction) * V, dt) : T;
+      AssertThrow(std::isfinite(theta) && std::isfinite(T_new) && T_new > 0,
+                  ExcMessage("The state of Chester's law left the finite "
+                             "numbers" +
+                             LawUtilities::at_point(x) +
+                             " (theta = " + std::to_string(theta) +
+                             ", T = " + std::to_string(T_new) +
+                             " K). Lower the heating (raise <Fault/Chester/"
+                             "Heat capacity per area>) or the time step."));
+      updated.variables = {theta, T_new};
+    }
+
+    RUPTURE_REGISTER_FRICTION_LAW(
+      Chester,
+      "chester",
+      "Chester's temperature-dependent rate-and-state friction (the "
+      "review's eq. 4.7-4.8, slip law) with the fault temperature as a "
+      "state variable warmed by frictional heating.")
+  } // namespace Friction
+} // namespace rupture
