@@ -58,7 +58,7 @@ namespace rupture
         return law.strength(x, old_state, l, dt, pressure, dS, mu);
       };
       double       mu = 0, dS = 0;
-      const double S  = strength(0., dS, mu);
+      const double S = strength(0., dS, mu);
       // Weakening at the start of the slip steeper than the penalty: g
       // below grows with the slip there, so the root lies beyond the
       // weakening and the traction drops to the residual strength at once.
@@ -83,8 +83,8 @@ namespace rupture
       // safeguarded with bisection (g(0) > 0 >= g(upper)).
       const auto g = [&](const double l, double &dg) {
         double       dSl = 0, m = 0;
-        const double Sl  = strength(l, dSl, m);
-        dg               = -p_t - dSl;
+        const double Sl = strength(l, dSl, m);
+        dg              = -p_t - dSl;
         return trial_norm - p_t * l - Sl;
       };
       double lower = 0, upper = trial_norm / p_t, l = 0;

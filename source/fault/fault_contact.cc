@@ -296,7 +296,8 @@ namespace rupture
       // friction coefficient), dmu that of mu with the slip increment.
       const auto g = [&](const double V, double &dg, double &mu, double &dmu) {
         double       dS = 0;
-        const double S  = friction_law->strength(x, pair.state, V * dt, dt, p, dS, mu);
+        const double S =
+          friction_law->strength(x, pair.state, V * dt, dt, p, dS, mu);
         dmu = (p > 0) ? dS / p : 0.;
         dg  = -Z - dS * dt;
         return s - Z * V - S;

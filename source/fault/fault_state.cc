@@ -98,9 +98,9 @@ namespace rupture
           // slip.
           const double t = time - dynamic_start;
           perturbation_time_function->set_time(0);
-          const double g =
-            forced_slip_active ? perturbation_time_function->value(Point<1>(t)) :
-                                 0.;
+          const double       g = forced_slip_active ?
+                                   perturbation_time_function->value(Point<1>(t)) :
+                                   0.;
           std::ostringstream message;
           message << "<Fault/Traction perturbation/Time function> must be "
                      "finite, but is "

@@ -55,30 +55,30 @@ namespace rupture
                                                        "573",
                                                        "2.7e4",
                                                        "1"};
-        const std::array<const char *, 11> help = {
-          "A, the direct effect, as a function of x, y, z (m; in 2-D z = 0). "
-          "> 0.",
-          "B, the evolution effect (the weight of the dimensionless state "
-          "theta), as a function of x, y, z. >= 0.",
-          "d_c (m), the slip over which theta evolves, as a function of x, y, "
-          "z. > 0.",
-          "mu0, the steady-state friction coefficient at V_c and T*, as a "
-          "function of x, y, z.",
-          "V_c (m/s), the reference slip rate, as a function of x, y, z. > 0.",
-          "Q_A (J/mol), the apparent activation enthalpy of the direct "
-          "effect, as a function of x, y, z.",
-          "Q_B (J/mol), the apparent activation enthalpy of the evolution "
-          "effect, as a function of x, y, z.",
-          "T* (K), the temperature at which the law is Ruina's, as a "
-          "function of x, y, z. > 0.",
-          "T_r (K), the temperature the fault relaxes to, as a function of x, "
-          "y, z. > 0.",
-          "H = rho c w (J/(m^2 K)), the heat capacity per unit fault area of "
-          "the shear zone that frictional heating warms (e.g. 2.7e6 J/(m^3 "
-          "K) times a width of 10 mm), as a function of x, y, z. > 0.",
-          "t_c (s), the time over which the shear zone's temperature relaxes "
-          "to T_r (about w^2 / thermal diffusivity), as a function of x, y, "
-          "z. > 0."};
+        const std::array<const char *, 11> help     = {
+              "A, the direct effect, as a function of x, y, z (m; in 2-D z = 0). "
+                  "> 0.",
+              "B, the evolution effect (the weight of the dimensionless state "
+                  "theta), as a function of x, y, z. >= 0.",
+              "d_c (m), the slip over which theta evolves, as a function of x, y, "
+                  "z. > 0.",
+              "mu0, the steady-state friction coefficient at V_c and T*, as a "
+                  "function of x, y, z.",
+              "V_c (m/s), the reference slip rate, as a function of x, y, z. > 0.",
+              "Q_A (J/mol), the apparent activation enthalpy of the direct "
+                  "effect, as a function of x, y, z.",
+              "Q_B (J/mol), the apparent activation enthalpy of the evolution "
+                  "effect, as a function of x, y, z.",
+              "T* (K), the temperature at which the law is Ruina's, as a "
+                  "function of x, y, z. > 0.",
+              "T_r (K), the temperature the fault relaxes to, as a function of x, "
+                  "y, z. > 0.",
+              "H = rho c w (J/(m^2 K)), the heat capacity per unit fault area of "
+                  "the shear zone that frictional heating warms (e.g. 2.7e6 J/(m^3 "
+                  "K) times a width of 10 mm), as a function of x, y, z. > 0.",
+              "t_c (s), the time over which the shear zone's temperature relaxes "
+                  "to T_r (about w^2 / thermal diffusivity), as a function of x, y, "
+                  "z. > 0."};
         for (unsigned int i = 0; i < 11; ++i)
           prm.declare_entry(names[i],
                             defaults[i],
@@ -226,8 +226,8 @@ namespace rupture
                               const double    initial_friction,
                               State          &state) const
     {
-      state             = State();
-      const Constants c = LawUtilities::constants(functions, x, state);
+      state                   = State();
+      const Constants c       = LawUtilities::constants(functions, x, state);
       const auto      require = [&](const bool         ok,
                                const std::string &entry,
                                const double       value,
@@ -257,8 +257,7 @@ namespace rupture
                   V,
                   "> 0 (m/s)");
           AssertThrow(
-            std::isfinite(initial_friction) && initial_friction > 0 &&
-              c[1] > 0,
+            std::isfinite(initial_friction) && initial_friction > 0 && c[1] > 0,
             ExcMessage("<Fault/Chester/Initial state> is empty, so the "
                        "initial state is the one for which the law holds at "
                        "t = 0 with the fault's initial traction, but the "
@@ -267,11 +266,11 @@ namespace rupture
                        LawUtilities::at_point(x) +
                        ". Give an <Initial state>."));
           // Psi for which mu(V_ini, Psi) = mu_ini, then theta from Psi.
-          const double psi =
-            regularized ?
-              StateEvolution::regularized_state(c[0], c[4], V, initial_friction) :
-              initial_friction - c[0] * std::log(V / c[4]);
-          theta = (psi - c[3] - c[0] * arrhenius(c, c[5], T)) / c[1];
+          const double psi = regularized ?
+                               StateEvolution::regularized_state(
+                                 c[0], c[4], V, initial_friction) :
+                               initial_friction - c[0] * std::log(V / c[4]);
+          theta            = (psi - c[3] - c[0] * arrhenius(c, c[5], T)) / c[1];
           require(std::isfinite(theta),
                   "Initial slip rate",
                   V,

@@ -152,9 +152,8 @@ namespace rupture
       message << "Cochard-Madariaga friction" << LawUtilities::at_point(x)
               << " has no unique slip rate: its strength falls with the slip "
                  "rate at up to sigma_0 / V0 = "
-              << c[0] / c[1] << " Pa s/m (<Fault/Cochard Madariaga/"
-              << names[0] << "> = " << c[0] << " Pa, <" << names[1]
-              << "> = " << c[1]
+              << c[0] / c[1] << " Pa s/m (<Fault/Cochard Madariaga/" << names[0]
+              << "> = " << c[0] << " Pa, <" << names[1] << "> = " << c[1]
               << " m/s), but the node's impedance, the traction change per "
                  "unit slip rate, is only Z = "
               << impedance

@@ -24,8 +24,8 @@ namespace rupture
                         double         &derivative_increment,
                         double         &derivative_pressure) const
     {
-      double       dmu = 0;
-      const double mu  = coefficient(x, old, slip_increment, dt, dmu);
+      double       dmu     = 0;
+      const double mu      = coefficient(x, old, slip_increment, dt, dmu);
       derivative_increment = dmu * pressure;
       derivative_pressure  = mu;
       return mu * pressure + cohesion(x, old);

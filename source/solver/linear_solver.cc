@@ -102,8 +102,9 @@ namespace rupture
           "penalty fault the slipping nodes couple normal and tangential "
           "jumps through mu p_n (the nonsymmetric tangent), which only a "
           "smoother that solves each node's dim x dim block at once handles "
-          "well: 'symmetric block Gauss-Seidel'. 'automatic' picks that one "
-          "with a penalty fault and 'Chebyshev' otherwise.");
+          "well: 'symmetric block Gauss-Seidel' (3-D only). 'automatic' picks "
+          "that one with a penalty fault in 3-D, 'symmetric Gauss-Seidel' "
+          "with one in 2-D and 'Chebyshev' otherwise.");
         prm.declare_entry("AMG smoother sweeps",
                           "2",
                           Patterns::Integer(1, 100),
@@ -309,10 +310,23 @@ namespace rupture
       data.elliptic              = true;
       data.higher_order_elements = higher_order;
       data.smoother_sweeps       = smoother_sweeps;
+      // ML's block smoother keeps the fine level's block size (dim) on the
+      // coarse levels, whose rows come in groups of the number of rigid
+      // body modes: 6 in 3-D fits blocks of 3, but 3 in 2-D does not fit
+      // blocks of 2, so there the point smoother is used.
+      const bool blocks_fit = (rigid_body_modes.size() != 3);
+      AssertThrow(blocks_fit || smoother != "symmetric block Gauss-Seidel",
+                  ExcMessage("<Solver/AMG smoother> = symmetric block "
+                             "Gauss-Seidel works in 3-D only (Trilinos ML "
+                             "cannot block the coarse levels of 2-D "
+                             "elasticity). Use 'automatic', 'symmetric "
+                             "Gauss-Seidel' or 'Chebyshev'."));
       data.smoother_type =
         smoother != "automatic" ?
           smoother.c_str() :
-          (penalty_fault ? "symmetric block Gauss-Seidel" : "Chebyshev");
+          (penalty_fault ? (blocks_fit ? "symmetric block Gauss-Seidel" :
+                                         "symmetric Gauss-Seidel") :
+                           "Chebyshev");
       data.aggregation_threshold = aggregation_threshold;
 
       Teuchos::ParameterList              parameters;

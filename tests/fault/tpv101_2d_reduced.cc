@@ -107,7 +107,7 @@ main(int argc, char **argv)
                                 "Fault/Traction perturbation/Traction="});
   if (root)
     {
-      const auto rows = tests::read_statistics("tpv101-quiet/statistics");
+      const auto rows    = tests::read_statistics("tpv101-quiet/statistics");
       double     largest = 0;
       for (const auto &r : rows)
         largest = std::max(largest, std::abs(r[14]));

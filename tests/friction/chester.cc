@@ -45,9 +45,8 @@ namespace
   }
 
   const Point<3> origin(0, 0, -7500);
-  const double   A = 0.01, B = 0.015, d_c = 0.4, mu0 = 0.6, V_c = 1e-6,
-               Q = 1.3e5, T_star = 573, H = 2.7e4, t_c = 1,
-               R = Chester::gas_constant;
+  const double A = 0.01, B = 0.015, d_c = 0.4, mu0 = 0.6, V_c = 1e-6, Q = 1.3e5,
+               T_star = 573, H = 2.7e4, t_c = 1, R = Chester::gas_constant;
 
   // Eq. 4.9 written out.
   double
@@ -109,7 +108,7 @@ main(int argc, char **argv)
             const double dt    = 10 * d_c / V;
             const State  state = run(*law, start(*law, 0, T), V, 0, dt, 200);
             double       d     = 0;
-            const double mu = law->coefficient(origin, state, V * dt, dt, d);
+            const double mu    = law->coefficient(origin, state, V * dt, dt, d);
             std::printf("   %-11s T = %3.0f K V = %-6.0e mu = %.8f, eq. 4.9 "
                         "%.8f: %s\n",
                         form.c_str(),
@@ -150,8 +149,8 @@ main(int argc, char **argv)
   std::printf("\n3. Temperature step 573 -> 623 K at V = 1e-6 m/s\n");
   {
     const double V = 1e-6, dt = 1e-3;
-    State        state = start(*law, theta_ss(V, T1), T1);
-    double       d     = 0;
+    State        state  = start(*law, theta_ss(V, T1), T1);
+    double       d      = 0;
     const double before = law->coefficient(origin, state, V * dt, dt, d);
     state.variables[1]  = T2;
     const double jump   = law->coefficient(origin, state, V * dt, dt, d);
@@ -229,9 +228,9 @@ main(int argc, char **argv)
           std::printf("   %-13s %-11s %s\n",
                       c.name,
                       form.c_str(),
-                      skip                          ? "(none at V = 0)" :
+                      skip                         ? "(none at V = 0)" :
                       relative_error(d, fd) < 1e-5 ? "agrees" :
-                                                      "DIFFERS");
+                                                     "DIFFERS");
         }
   }
 

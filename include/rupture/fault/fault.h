@@ -388,9 +388,9 @@ namespace rupture
         /// perturbation/Traction>.
         Tensor<1, dim> background_traction;
         Tensor<1, dim> perturbation;
-        double                                   normal_penalty     = 0;
-        double                                   tangential_penalty = 0;
-        double                                   shear_modulus      = 0;
+        double         normal_penalty     = 0;
+        double         tangential_penalty = 0;
+        double         shear_modulus      = 0;
         // Committed state.
         Friction::State state;
         Tensor<1, dim>  plastic_slip;

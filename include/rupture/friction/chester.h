@@ -41,8 +41,8 @@ namespace rupture
      * of the step is mu(V, theta_new(V)) at the temperature at the start of
      * the step. After the step the temperature equation, linear in T with
      * the step's traction and slip rate, is integrated exactly too:
-     *   T_new = T_inf + (T - T_inf) e^(-dt / t_c),  T_inf = T_r + tau V t_c / H.
-     * The friction thus sees the temperature one step late, which is
+     *   T_new = T_inf + (T - T_inf) e^(-dt / t_c),  T_inf = T_r + tau V t_c /
+     * H. The friction thus sees the temperature one step late, which is
      * accurate while a step warms the fault by much less than
      * R T^2 / Q_A, the warming that changes mu by A.
      *
@@ -146,11 +146,11 @@ namespace rupture
                double          &dmu_dtheta) const;
 
     private:
-      bool regularized = true;
+      bool                                               regularized = true;
       std::array<std::unique_ptr<FunctionParser<3>>, 11> functions;
-      std::unique_ptr<FunctionParser<3>>                  initial_state;
-      std::unique_ptr<FunctionParser<3>>                  initial_rate;
-      std::unique_ptr<FunctionParser<3>>                  initial_temperature;
+      std::unique_ptr<FunctionParser<3>>                 initial_state;
+      std::unique_ptr<FunctionParser<3>>                 initial_rate;
+      std::unique_ptr<FunctionParser<3>>                 initial_temperature;
     };
   } // namespace Friction
 } // namespace rupture
