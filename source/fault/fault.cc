@@ -103,6 +103,17 @@ namespace rupture
           "(, z), components separated by ';'. Empty for zero, as when the "
           "stress comes from a loading step. Used by the benchmarks, e.g. "
           "TPV3: '70e6; -120e6; 0' for a plane with normal (0, 1, 0).");
+        prm.declare_entry(
+          "Initial slip velocity",
+          "",
+          Patterns::Anything(),
+          "Velocity (m/s) of the plus side relative to the minus side at "
+          "t = 0, one number per dimension, e.g. '1e-12, 0, 0': each side "
+          "starts moving rigidly at plus or minus half of it (added to "
+          "<Initial conditions/Initial velocity>), as the SCEC rate-and-state "
+          "benchmarks start (particle velocity +-V/2 on the two sides). Set "
+          "the friction law's <Initial slip rate> to its magnitude. Empty "
+          "for none.");
         prm.enter_subsection("Traction perturbation");
         {
           prm.declare_entry(
@@ -216,6 +227,10 @@ namespace rupture
                                        variables);
       fault->initial_traction = Utilities::parse_function<dim>(
         prm.get("Initial traction"), dim, "Fault/Initial traction", variables);
+      if (!dealii::Utilities::trim(prm.get("Initial slip velocity")).empty())
+        fault->initial_slip_velocity =
+          Utilities::parse_vector<dim>(prm.get("Initial slip velocity"),
+                                       "Fault/Initial slip velocity");
       prm.enter_subsection("Traction perturbation");
       if (!dealii::Utilities::trim(prm.get("Traction")).empty())
         {
@@ -353,6 +368,11 @@ namespace rupture
               pair.initial_traction[c] =
                 initial_traction->value(pair.location, c);
             pair.background_traction = pair.initial_traction;
+            // The fault slips from the start at its initial slip velocity
+            // (along the fault).
+            pair.slip_velocity =
+              initial_slip_velocity -
+              (initial_slip_velocity * pair.normal) * pair.normal;
             if (traction_perturbation)
               for (unsigned int c = 0; c < dim; ++c)
                 pair.perturbation[c] =
@@ -378,6 +398,8 @@ namespace rupture
                 (tn < 0) ? ts / (-tn) :
                            std::numeric_limits<double>::quiet_NaN(),
                 pair.state);
+              pair.state.slip_rate = pair.slip_velocity.norm();
+              pair.rupture_rate    = pair.state.slip_rate;
             }
             if (forced_region->value(pair.location) != 0)
               {

@@ -320,20 +320,26 @@ namespace rupture
   {
     TimerOutput::Scope t(timer, "Initial state");
 
-    // Interpolate the initial fields at the support points of the DoFs.
+    // Interpolate the initial fields at the support points of the DoFs. A
+    // fault's initial slip velocity moves each side rigidly at half of it
+    // (the minus side has FE index 0, the plus side 1).
+    const Tensor<1, dim> half_slip_velocity =
+      fault ? 0.5 * fault->initial_slip_velocity_of_sides() : Tensor<1, dim>();
     for_each_support_point(
       [](const auto &cell) { return cell->is_locally_owned(); },
       [&](const auto                                 &cell,
           const std::vector<types::global_dof_index> &dofs,
           const std::vector<Point<dim>>              &points) {
-        const auto &fe = cell->get_fe();
+        const auto  &fe   = cell->get_fe();
+        const double side = (fault && cell->active_fe_index() == 1) ? 1. : -1.;
         for (unsigned int i = 0; i < dofs.size(); ++i)
           if (locally_owned_dofs.is_element(dofs[i]))
             {
               const unsigned int c =
                 fe.system_to_component_index(i).first % dim;
               displacement(dofs[i]) = initial_displacement->value(points[i], c);
-              velocity(dofs[i])     = initial_velocity->value(points[i], c);
+              velocity(dofs[i])     = initial_velocity->value(points[i], c) +
+                                  side * half_slip_velocity[c];
             }
       });
     displacement.compress(VectorOperation::insert);

@@ -206,6 +206,16 @@ namespace rupture
       }
 
       /**
+       * <Fault/Initial slip velocity>: the velocity of the plus side
+       * relative to the minus side at t = 0 (zero by default).
+       */
+      const Tensor<1, dim> &
+      initial_slip_velocity_of_sides() const
+      {
+        return initial_slip_velocity;
+      }
+
+      /**
        * The traction-at-split-node method (Day et al. 2005) for the
        * explicit scheme. Given the predicted displacement @p u at the end of
        * the step, the predicted velocity @p v (v + (1 - gamma) dt a), the
@@ -485,6 +495,7 @@ namespace rupture
       std::unique_ptr<FunctionParser<dim>> normal_penalty;
       std::unique_ptr<FunctionParser<dim>> tangential_penalty;
       std::unique_ptr<FunctionParser<dim>> initial_traction;
+      Tensor<1, dim>                       initial_slip_velocity;
       /// Fault/Traction perturbation: null without one.
       std::unique_ptr<FunctionParser<dim>> traction_perturbation;
       std::unique_ptr<FunctionParser<1>>   perturbation_time_function;
