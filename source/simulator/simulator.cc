@@ -467,12 +467,14 @@ namespace rupture
                                test_mode ? 0. : MPI_Wtime() - wall_time_start};
     if (exact_displacement)
       row.push_back(compute_l2_error(time));
+    // One reduction over the fault for all its columns.
+    const Fault::Statistics f =
+      fault ? fault->statistics() : Fault::Statistics();
     if (fault)
       {
-        const Fault::Statistics f  = fault->statistics();
-        const double            mw = (dim == 3 && f.seismic_moment > 0) ?
-                                       2. / 3. * (std::log10(f.seismic_moment) - 9.1) :
-                                       0.;
+        const double mw = (dim == 3 && f.seismic_moment > 0) ?
+                            2. / 3. * (std::log10(f.seismic_moment) - 9.1) :
+                            0.;
         for (const double v : {static_cast<double>(last_newton_iterations),
                                static_cast<double>(f.n_slipping),
                                static_cast<double>(f.n_open),
@@ -489,14 +491,11 @@ namespace rupture
       }
     if (has_absorbing)
       row.push_back(absorbed_energy);
-    if (fault)
+    // The friction state's range, after all others.
+    for (unsigned int i = 0; i < f.state_minimum.size(); ++i)
       {
-        const Fault::Statistics f = fault->statistics();
-        for (unsigned int i = 0; i < f.state_minimum.size(); ++i)
-          {
-            row.push_back(f.state_minimum[i]);
-            row.push_back(f.state_maximum[i]);
-          }
+        row.push_back(f.state_minimum[i]);
+        row.push_back(f.state_maximum[i]);
       }
     return row;
   }
