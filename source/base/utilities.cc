@@ -165,17 +165,27 @@ namespace rupture
     write_file_atomically(const std::string &filename,
                           const std::string &contents)
     {
-      const std::string tmp = filename + ".tmp";
+      const std::string tmp     = filename + ".tmp";
+      bool              written = false;
       {
         std::ofstream out(tmp);
-        AssertThrow(out, ExcMessage("Cannot write the file <" + tmp + ">."));
-        out << contents;
-        out.close();
-        AssertThrow(out, ExcMessage("Writing <" + tmp + "> failed."));
+        if (out)
+          {
+            out << contents;
+            out.close();
+            written = static_cast<bool>(out);
+          }
       }
-      AssertThrow(std::rename(tmp.c_str(), filename.c_str()) == 0,
-                  ExcMessage("Cannot rename <" + tmp + "> to <" + filename +
-                             ">."));
+      // No temporary file outlives a failed write.
+      if (!written || std::rename(tmp.c_str(), filename.c_str()) != 0)
+        {
+          std::remove(tmp.c_str());
+          AssertThrow(false,
+                      ExcMessage("Cannot write the file <" + filename +
+                                 "> (through <" + tmp +
+                                 ">): is the disk full or the directory not "
+                                 "writable?"));
+        }
     }
 
 

@@ -347,12 +347,6 @@ namespace rupture
         area_normal.compress(VectorOperation::add);
       }
 
-      std::map<types::global_dof_index, Point<dim>> support_points;
-      DoFTools::map_dofs_to_support_points(hp::MappingCollection<dim>(
-                                             MappingQ1<dim>()),
-                                           dof_handler,
-                                           support_points);
-
       pairs.clear();
       for (auto &[key, pair] : fault_nodes)
         if (locally_owned_dofs.is_element(pair.minus[0]))
@@ -362,7 +356,6 @@ namespace rupture
             pair.area = pair.normal.norm();
             AssertThrow(pair.area > 0, ExcInternalError());
             pair.normal /= pair.area;
-            pair.location    = support_points[pair.minus[0]];
             const Point<3> x = to_3d(pair.location);
             for (unsigned int c = 0; c < dim; ++c)
               pair.initial_traction[c] =
@@ -491,6 +484,16 @@ namespace rupture
       std::vector<types::global_dof_index> dm(fe0.n_dofs_per_face()),
         dp(fe1.n_dofs_per_face());
       const unsigned int n_nodes = fe0.n_dofs_per_face() / dim;
+      // Where each face node sits, in the face's own coordinates: the
+      // support points of the FE_Q on a face (vertices, then line and face
+      // midpoints for degree 2), mapped d-linearly from the face's
+      // vertices. Only fault nodes are located, instead of a map of the
+      // support points of every DoF (some 80 B per DoF of the whole mesh).
+      const std::vector<Point<dim - 1>> &unit_face_points =
+        fe0.base_element(0).get_unit_face_support_points();
+      AssertThrow(unit_face_points.size() == n_nodes &&
+                    fe0.base_element(0).degree <= 2,
+                  ExcInternalError());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial() && cell->active_fe_index() == 0)
           for (const auto f : cell->face_indices())
@@ -550,7 +553,22 @@ namespace rupture
                                 "mesh faces, or a mesh that has faces on "
                                 "the plane."));
                 }
-              const bool is_fault = (region->value(center) != 0);
+              const double region_value = region->value(center);
+              if (!std::isfinite(region_value))
+                {
+                  std::ostringstream where;
+                  where << center;
+                  AssertThrow(false,
+                              ExcMessage("<Fault/Fault region> is not a "
+                                         "finite number at the interface "
+                                         "face (" +
+                                         where.str() +
+                                         "). Allowed is an expression that "
+                                         "is finite everywhere on the "
+                                         "interface: nonzero on the fault, "
+                                         "0 where the sides stay welded."));
+                }
+              const bool is_fault = (region_value != 0);
               if (is_fault && cell->is_locally_owned())
                 result.fault_faces.insert({cell, f});
 
@@ -580,6 +598,13 @@ namespace rupture
                   NodePair pair;
                   pair.minus = minus[k];
                   pair.plus  = plus[k];
+                  for (unsigned int v = 0;
+                       v < GeometryInfo<dim>::vertices_per_face;
+                       ++v)
+                    pair.location +=
+                      GeometryInfo<dim - 1>::d_linear_shape_function(
+                        unit_face_points[k], v) *
+                      face->vertex(v);
                   pair.shear_modulus =
                     shear_modulus ? (*shear_modulus)[cell->material_id()] : 0.;
                   (is_fault ? fault_nodes : welded_nodes)

@@ -340,7 +340,7 @@ namespace rupture
     template <int dim>
     void
     FaultOutput<dim>::write_surface(const Fault<dim>  &fault,
-                                    const std::string &directory,
+                                    Output::Directory &directory,
                                     const double       time,
                                     const unsigned int step)
     {
@@ -445,12 +445,11 @@ namespace rupture
       std::ostringstream name;
       name << "fault/fault_" << std::setw(5) << std::setfill('0') << step
            << ".vtu";
-      std::filesystem::create_directories(directory + "/fault");
-      Utilities::write_file_atomically(directory + "/" + name.str(), out.str());
+      directory.write(name.str(), out.str());
       this->records.emplace_back(time, name.str());
       std::ostringstream pvd;
       DataOutBase::write_pvd_record(pvd, this->records);
-      Utilities::write_file_atomically(directory + "/fault.pvd", pvd.str());
+      directory.write("fault.pvd", pvd.str());
     }
 
 
@@ -458,7 +457,7 @@ namespace rupture
     template <int dim>
     void
     FaultOutput<dim>::write_tables(const Fault<dim>  &fault,
-                                   const std::string &directory,
+                                   Output::Directory &directory,
                                    const double       time_step,
                                    const bool         test_mode) const
     {
@@ -520,8 +519,7 @@ namespace rupture
                 out << (c ? " " : "") << row[c];
               out << "\n";
             }
-          Utilities::write_file_atomically(directory + "/" + s.name + ".dat",
-                                           out.str());
+          directory.write(s.name + ".dat", out.str());
         }
 
       std::ostringstream out;
@@ -539,8 +537,7 @@ namespace rupture
           out << strike_component(r) << " " << dip_component(r) << " "
               << (rec.rupture_time < 0 ? 1e9 : rec.rupture_time) << "\n";
         }
-      Utilities::write_file_atomically(directory + "/rupture_time.dat",
-                                       out.str());
+      directory.write("rupture_time.dat", out.str());
     }
 
 

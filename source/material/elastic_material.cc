@@ -70,8 +70,10 @@ namespace rupture
                           Patterns::Anything(),
                           "P-wave speed of each material (m/s). Used with the "
                           "parametrization 'wave speeds'. Must exceed "
-                          "sqrt(2) times the S-wave speed (Poisson's ratio "
-                          "above 0 is not required, below 0.5 is).");
+                          "sqrt(2) times the S-wave speed, which keeps "
+                          "Poisson's ratio in (0, 0.5) (a negative ratio "
+                          "can be given with the parametrization \"Young's "
+                          "modulus and Poisson's ratio\").");
         prm.declare_entry("S-wave speed",
                           "3464",
                           Patterns::Anything(),

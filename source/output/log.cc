@@ -54,6 +54,8 @@ namespace rupture
         file.put(ch);
       else
         pending.put(ch);
+      if (ch == '\n')
+        sync();
       return c;
     }
 
@@ -67,6 +69,10 @@ namespace rupture
         file.write(s, n);
       else
         pending.write(s, n);
+      // Line by line: a batch job's stdout is a file, block-buffered, and
+      // a run killed at its time limit would otherwise leave nothing.
+      if (std::char_traits<char>::find(s, n, '\n') != nullptr)
+        sync();
       return n;
     }
 

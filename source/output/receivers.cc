@@ -142,8 +142,7 @@ namespace rupture
 
     template <int dim>
     void
-    Receivers<dim>::write(const std::string &output_directory,
-                          const double       time_step) const
+    Receivers<dim>::write(Directory &directory, const double time_step) const
     {
       if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
         return;
@@ -171,9 +170,7 @@ namespace rupture
                 out << (i ? " " : "") << row[i];
               out << "\n";
             }
-          Utilities::write_file_atomically(output_directory + "/" + r.name +
-                                             ".dat",
-                                           out.str());
+          directory.write(r.name + ".dat", out.str());
         }
     }
 

@@ -107,11 +107,11 @@ namespace rupture
 
 
     template <int dim>
-    VolumeOutput<dim>::VolumeOutput(const std::string &output_directory,
+    VolumeOutput<dim>::VolumeOutput(Directory                        &directory,
                                     const Material::ElasticMaterials &materials,
                                     const unsigned int cells_per_piece,
                                     const MPI_Comm     communicator)
-      : directory(output_directory)
+      : directory(directory)
       , materials(materials)
       , cells_per_piece(cells_per_piece)
       , communicator(communicator)
@@ -225,9 +225,8 @@ namespace rupture
 
           std::ostringstream vtu;
           data_out.write_vtu(vtu);
-          Utilities::write_file_atomically(directory + "/solution/" +
-                                             piece_name(first_piece + piece),
-                                           vtu.str());
+          directory.write("solution/" + piece_name(first_piece + piece),
+                          vtu.str());
           if (my_rank == 0 && piece == 0)
             {
               std::vector<std::string> names;
@@ -235,8 +234,7 @@ namespace rupture
                 names.push_back(piece_name(i));
               std::ostringstream record;
               data_out.write_pvtu_record(record, names);
-              Utilities::write_file_atomically(directory + "/solution/" + pvtu,
-                                               record.str());
+              directory.write("solution/" + pvtu, record.str());
             }
         }
       records.emplace_back(time, "solution/" + pvtu);
@@ -245,8 +243,7 @@ namespace rupture
         {
           std::ostringstream pvd;
           DataOutBase::write_pvd_record(pvd, records);
-          Utilities::write_file_atomically(directory + "/solution.pvd",
-                                           pvd.str());
+          directory.write("solution.pvd", pvd.str());
         }
     }
 

@@ -65,6 +65,62 @@ namespace rupture
                              "$MeshFormat. Allowed are ASCII .msh files of "
                              "format 2.2 or 4.1."));
 
+      // The version line: "version file-type data-size". deal.II reads
+      // ASCII 2.2 and 4.1; a file whose header and body disagree once
+      // corrupted the reader's memory, so the body's section headers are
+      // checked against the version below.
+      std::getline(in, line);
+      std::string version;
+      int         file_type = -1;
+      {
+        std::istringstream words(line);
+        words >> version >> file_type;
+      }
+      AssertThrow((version == "2.2" || version == "4.1") && file_type == 0,
+                  ExcMessage("The mesh file <" + file_name +
+                             "> given in <Scene/Gmsh/Mesh file> has the "
+                             "format line '" +
+                             dealii::Utilities::trim(line) +
+                             "'. Allowed are ASCII files (file type 0) of "
+                             "format 2.2 or 4.1: save the mesh with Gmsh's "
+                             "'Version 2 ASCII' or 'Version 4 ASCII' option."));
+      {
+        // In 2.2 $Nodes and $Elements start with one count; in 4.1 with
+        // four numbers (blocks, count, smallest and largest tag).
+        const unsigned int expected = (version == "2.2") ? 1 : 4;
+        std::ifstream      body(file_name);
+        std::string        section;
+        while (std::getline(body, section))
+          {
+            section = dealii::Utilities::trim(section);
+            if (section != "$Nodes" && section != "$Elements")
+              continue;
+            std::string header;
+            std::getline(body, header);
+            std::istringstream words(header);
+            std::string        word;
+            unsigned int       n_words = 0;
+            bool               numbers = true;
+            while (words >> word)
+              {
+                ++n_words;
+                numbers = numbers && word.find_first_not_of("0123456789") ==
+                                       std::string::npos;
+              }
+            AssertThrow(
+              n_words == expected && numbers,
+              ExcMessage(
+                "The mesh file <" + file_name + "> says it has format " +
+                version + ", but its " + section + " section starts with '" +
+                dealii::Utilities::trim(header) + "', which is not " +
+                (expected == 1 ? std::string("one count (format 2.2)") :
+                                 std::string("four numbers (format "
+                                             "4.1)")) +
+                ". Save the mesh again with Gmsh, or fix "
+                "the $MeshFormat line."));
+          }
+      }
+
       // $PhysicalNames: "n" then lines "dimension tag \"name\"".
       boundary_names.clear();
       while (std::getline(in, line))

@@ -103,13 +103,16 @@ namespace rupture
     add_kinematic_increment(displacement);
     distribute_hanging(displacement);
 
-    double        reference         = 0;
-    double        increment_norm    = 0;
-    double        increment_ratio   = 0;
-    unsigned long last_signature    = 0;
-    unsigned int  linear_iterations = 0;
-    last_linear_iterations          = 0;
-    stick_crossings_limited         = 0;
+    double reference = 0;
+    // The displacement that the step's force scale produces through the
+    // stiffest diagonal entry: what round-off in the solve still resolves.
+    double        displacement_scale = 0;
+    double        increment_norm     = 0;
+    double        increment_ratio    = 0;
+    unsigned long last_signature     = 0;
+    unsigned int  linear_iterations  = 0;
+    last_linear_iterations           = 0;
+    stick_crossings_limited          = 0;
     std::vector<double>        norms;
     std::vector<unsigned long> signatures;
     // The inexact Newton forcing term (<Solver/Newton forcing>).
@@ -154,10 +157,23 @@ namespace rupture
                 increment_constraints.set_zero(scratch);
                 // A prestressed fault at rest: the forces of its initial
                 // traction.
-                reference = std::max({norm,
-                                      scratch.l2_norm(),
-                                      fault->initial_force_norm(),
-                                      1e-300});
+                reference           = std::max({norm,
+                                                scratch.l2_norm(),
+                                                fault->initial_force_norm(),
+                                                1e-300});
+                double max_diagonal = 0;
+                if (linear_solver.matrix_free())
+                  max_diagonal = system_diagonal.linfty_norm();
+                else
+                  {
+                    for (const auto i : locally_owned_dofs)
+                      max_diagonal =
+                        std::max(max_diagonal,
+                                 std::abs(system_matrix.diag_element(i)));
+                    max_diagonal =
+                      dealii::Utilities::MPI::max(max_diagonal, communicator);
+                  }
+                displacement_scale = reference / std::max(max_diagonal, 1e-300);
               }
             else
               {
@@ -173,12 +189,14 @@ namespace rupture
                   norm <= newton_force_tolerance * reference;
                 // A step that changes the displacement very little (the
                 // first dynamic steps after a long loading phase: 1e-11 m
-                // on a field of metres) cannot ask for a correction below
-                // what round-off in the penalty system still resolves: a
-                // correction below 1e-11 of the whole displacement counts
-                // as converged.
-                const double round_off = 1e-11 * displacement.l2_norm();
-                const bool   displacement_ok =
+                // on a field of metres; a fault creeping at 1e-20 m/s)
+                // cannot ask for a correction below what round-off in the
+                // penalty system still resolves: a correction below 1e-11
+                // of the whole displacement, or of the displacement the
+                // step's force scale produces, counts as converged.
+                const double round_off =
+                  1e-11 * std::max(displacement.l2_norm(), displacement_scale);
+                const bool displacement_ok =
                   increment_norm <=
                   std::max(newton_displacement_tolerance * change, round_off);
                 increment_ratio   = increment_norm / std::max(change, 1e-300);
@@ -231,7 +249,8 @@ namespace rupture
                   message << ", but the last correction was " << increment_ratio
                           << " of the step's displacement change (wanted "
                           << newton_displacement_tolerance
-                          << ", or below 1e-11 of the whole displacement)";
+                          << ", or below 1e-11 of the whole displacement or of "
+                             "the displacement of the step's forces)";
                 message << "; " << f.n_slipping << " slipping and " << f.n_open
                         << " open fault nodes. ";
                 // The effective stiffness without the contact (the matrix

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 
 
 namespace rupture
@@ -218,9 +219,12 @@ namespace rupture
                         "... and the last displacement increment is below "
                         "this fraction of the displacement change of the "
                         "step (the paper's two criteria, Fig. 6), or below "
-                        "1e-11 of the whole displacement, which round-off "
-                        "no longer resolves (a quiet step after a long "
-                        "loading phase changes it by far less). A step in "
+                        "1e-11 of the whole displacement or of the "
+                        "displacement of the step's force scale (the force "
+                        "scale over the largest diagonal entry of the "
+                        "system), which round-off no longer resolves (a "
+                        "quiet step after a long loading phase, a fault "
+                        "creeping at 1e-20 m/s). A step in "
                         "which every fault node stuck in the last two "
                         "iterations is linear and needs only the first.");
       prm.declare_entry("Maximum step cuts",
@@ -327,13 +331,16 @@ namespace rupture
   void
   Simulator<dim>::parse_parameters(ParameterHandler &prm)
   {
-    output_directory = dealii::Utilities::trim(prm.get("Output directory"));
-    // An empty name would put every file at the root of the file system
-    // ("/log.txt", "/solution/").
-    AssertThrow(!output_directory.empty(),
-                ExcMessage("<Output directory> is empty. Allowed is the name "
-                           "of a directory, relative to where the program "
-                           "runs (e.g. 'output') or absolute."));
+    {
+      // An empty name would put every file at the root of the file system
+      // ("/log.txt", "/solution/"); the directory is only touched once the
+      // whole input has been checked (prepare_output_directory()).
+      const std::string name =
+        dealii::Utilities::trim(prm.get("Output directory"));
+      Output::Directory::check_name(name, "Output directory");
+      output_directory =
+        std::make_unique<Output::Directory>(name, communicator);
+    }
     test_mode = prm.get_bool("Test mode");
 
     prm.enter_subsection("Discretization");
@@ -426,6 +433,30 @@ namespace rupture
         fault_output_interval = fault_output->surface_interval(output_interval);
       }
     n_sides = fault ? 2 : 1;
+
+    // Station and receiver files share the directory: two series with one
+    // file name would silently lose one.
+    {
+      std::map<std::string, std::string> owner;
+      if (fault)
+        owner["rupture_time"] = "the fault's rupture-time file";
+      const auto claim = [&](const std::string &name,
+                             const std::string &entry) {
+        const auto [it, inserted] = owner.emplace(name, entry);
+        AssertThrow(inserted,
+                    ExcMessage("The name <" + name + "> in <" + entry +
+                               "> is also used by " + it->second +
+                               ": both would write <" + name +
+                               ".dat>. Give every station and receiver a "
+                               "name of its own, other than "
+                               "'rupture_time'."));
+      };
+      if (fault)
+        for (const auto &name : fault_output->station_names())
+          claim(name, "Fault/Output/Stations");
+      for (const auto &name : receivers->names())
+        claim(name, "Output/Receivers");
+    }
     if (fault)
       {
         const bool is_explicit =

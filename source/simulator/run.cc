@@ -1,3 +1,4 @@
+#include <rupture/base/interruption.h>
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/run.h>
 #include <rupture/simulator/simulator.h>
@@ -8,6 +9,8 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -94,6 +97,17 @@ namespace rupture
                              "\"Section/Subsection/Entry=value\"."));
       const std::vector<std::string> path =
         dealii::Utilities::split_string_list(assignment.substr(0, equal), '/');
+      // "=1", "/=1", "A//B=1": every part of the path must name something.
+      AssertThrow(
+        !path.empty() &&
+          std::none_of(path.begin(),
+                       path.end(),
+                       [](const std::string &part) { return part.empty(); }) &&
+          std::count(assignment.begin(), assignment.begin() + equal, '/') + 1 ==
+            static_cast<long>(path.size()),
+        ExcMessage("The option --set \"" + assignment +
+                   "\" names no entry before '='. Allowed is --set "
+                   "\"Section/Subsection/Entry=value\"."));
       const std::string value =
         dealii::Utilities::trim(assignment.substr(equal + 1));
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
@@ -228,9 +242,39 @@ namespace rupture
                                "file.prm'; see 'rupture --help'."));
         {
           std::ifstream test(parameter_file);
-          AssertThrow(test.good(),
+          AssertThrow(test.good() &&
+                        !std::filesystem::is_directory(parameter_file),
                       ExcMessage("The parameter file <" + parameter_file +
-                                 "> does not exist or cannot be read."));
+                                 "> does not exist, is a directory or cannot "
+                                 "be read."));
+          // A file that sets nothing would run the built-in defaults into
+          // ./output: almost never what was meant (an empty file, the wrong
+          // file, a sweep script that wrote nothing).
+          // (.json and .xml files have a syntax of their own.)
+          const auto ends_with = [&](const std::string &suffix) {
+            return parameter_file.size() >= suffix.size() &&
+                   parameter_file.compare(parameter_file.size() - suffix.size(),
+                                          suffix.size(),
+                                          suffix) == 0;
+          };
+          std::string line;
+          bool        sets_something = ends_with(".json") || ends_with(".xml");
+          while (!sets_something && std::getline(test, line))
+            {
+              const std::string code =
+                dealii::Utilities::trim(line.substr(0, line.find('#')));
+              sets_something = code.rfind("set ", 0) == 0 ||
+                               code.rfind("include ", 0) == 0 ||
+                               code.rfind("subsection ", 0) == 0;
+            }
+          AssertThrow(sets_something,
+                      ExcMessage("The parameter file <" + parameter_file +
+                                 "> sets no entry (it is empty or holds only "
+                                 "comments), so the run would use the "
+                                 "built-in defaults throughout. Give it at "
+                                 "least one 'set Entry = value' line; "
+                                 "'rupture --print-parameters prm' prints a "
+                                 "complete file to start from."));
         }
         try
           {
@@ -246,11 +290,19 @@ namespace rupture
         for (const auto &assignment : overrides)
           apply_override(prm, assignment);
 
-        const unsigned int dimension = prm.get_integer("Dimension");
+        // From here on SIGTERM and SIGINT stop the run cleanly.
+        const Interruption::Handlers handlers;
+        const unsigned int           dimension = prm.get_integer("Dimension");
         if (dimension == 2)
           run_simulation<2>(prm, communicator);
         else
           run_simulation<3>(prm, communicator);
+      }
+    catch (const Interruption::Stopped &stopped)
+      {
+        if (root)
+          std::cerr << "\n" << stopped.what() << std::endl;
+        return 128 + stopped.signal;
       }
     catch (const ExceptionBase &e)
       {

@@ -1,3 +1,4 @@
+#include <rupture/base/interruption.h>
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
 
@@ -83,7 +84,7 @@ namespace rupture
         dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       try
         {
-          statistics.write(output_directory + "/statistics");
+          statistics.write(output_directory->record("statistics"));
         }
       catch (...)
         {}
@@ -96,24 +97,22 @@ namespace rupture
   void
   Simulator<dim>::prepare_output_directory(ParameterHandler &prm)
   {
+    // Collective: the lock, and the removal of the earlier run's files.
+    output_directory->open();
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        std::error_code error;
-        std::filesystem::create_directories(output_directory + "/solution",
-                                            error);
-        AssertThrow(!error,
-                    ExcMessage("The output directory <" + output_directory +
-                               "> cannot be created: " + error.message()));
-        log.attach_file(output_directory + "/log.txt");
+        log.attach_file(output_directory->record("log.txt"));
         std::ostringstream parameters;
         prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-        Utilities::write_file_atomically(output_directory + "/parameters.prm",
-                                         parameters.str());
+        output_directory->write("parameters.prm", parameters.str());
       }
-    MPI_Barrier(communicator);
+    // Where the results go (not in test mode: the path is the machine's).
+    if (!test_mode)
+      pcout << "   Output directory: " << output_directory->absolute_name()
+            << std::endl;
     output_prepared = true;
     volume_output   = std::make_unique<Output::VolumeOutput<dim>>(
-      output_directory, materials, cells_per_output_piece, communicator);
+      *output_directory, materials, cells_per_output_piece, communicator);
   }
 
 
@@ -220,11 +219,11 @@ namespace rupture
 
     if (fault)
       fault_output->write_tables(*fault,
-                                 output_directory,
+                                 *output_directory,
                                  time_step,
                                  test_mode);
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-      statistics.write(output_directory + "/statistics");
+      statistics.write(output_directory->record("statistics"));
 
     const auto &last = statistics.last_row();
     pcout << std::scientific << std::setprecision(6)
@@ -286,6 +285,8 @@ namespace rupture
         pcout << "   Energy balance error " << last[8] << " J\n";
         print_performance_summary();
         timer.print_summary();
+        pcout << "Results are in " << output_directory->absolute_name()
+              << std::endl;
       }
   }
 
@@ -506,24 +507,33 @@ namespace rupture
   void
   Simulator<dim>::write_step_output(const bool force)
   {
+    // Decided together: a signal may reach one rank only, and the clocks
+    // of the ranks differ.
+    const bool root =
+      dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
+    int flags[2] = {Interruption::requested(),
+                    root && (MPI_Wtime() - last_table_write >= 60.)};
+    MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_INT, MPI_MAX, communicator);
+    const int signal = flags[0];
+
     // The volume and the fault have intervals of their own: the fault's
     // files scale with the fault, so a large model may write its fault
     // often and its volume rarely. A forced output (the first and last
-    // step) writes everything that is written at all.
+    // step, a stop on a signal) writes everything that is written at all.
+    const bool all = force || signal != 0;
     const auto due = [&](const double interval, const double next) {
-      return interval >= 0 && (force || time >= next - 1e-9 * time_step);
+      return interval >= 0 && (all || time >= next - 1e-9 * time_step);
     };
     const bool volume_due = due(output_interval, next_output_time);
     const bool fault_due =
       fault && due(fault_output_interval, next_fault_output_time);
 
     // Receiver series, the fault's tables and the statistics are small:
-    // written at every output time and at the end.
-    if (force || volume_due || fault_due)
-      receivers->write(output_directory, time_step);
-    if (!volume_due && !fault_due)
+    // written at every output time, at the end and once a minute.
+    if (!(all || volume_due || fault_due || flags[1] != 0))
       return;
     TimerOutput::Scope t(timer, "Output");
+    receivers->write(*output_directory, time_step);
     if (volume_due)
       {
         VectorType u_ghost(locally_owned_dofs,
@@ -539,16 +549,27 @@ namespace rupture
       }
     if (fault_due)
       {
-        fault_output->write_surface(*fault, output_directory, time, step);
+        fault_output->write_surface(*fault, *output_directory, time, step);
         next_fault_output_time = time + fault_output_interval;
       }
     if (fault)
       fault_output->write_tables(*fault,
-                                 output_directory,
+                                 *output_directory,
                                  time_step,
                                  test_mode);
-    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-      statistics.write(output_directory + "/statistics");
+    if (root)
+      statistics.write(output_directory->record("statistics"));
+    last_table_write = MPI_Wtime();
+
+    if (signal != 0)
+      {
+        std::ostringstream what;
+        what << "Stopped by " << Interruption::signal_name(signal)
+             << " after step " << step << " (t = " << time
+             << " s). The results of every step done are written in "
+             << output_directory->absolute_name() << ".";
+        throw Interruption::Stopped(signal, what.str());
+      }
   }
 
 

@@ -1,5 +1,5 @@
-// The 1-D plane-wave slip-weakening interface (verification-cases.md,
-// section 1), with implicit Newmark and penalty contact and with the
+// The 1-D plane-wave slip-weakening interface (doc/verification.md,
+// section 5), with implicit Newmark and penalty contact and with the
 // explicit scheme and traction at split nodes: the slip history and the
 // final slip rate against the analytic solution, and no slip at all when
 // the initial shear stress is below the static strength. The implicit run

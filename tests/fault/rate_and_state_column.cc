@@ -24,13 +24,23 @@
 
 #include "../tests.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace
 {
   const double a = 0.008, b = 0.012, L = 0.1, f0 = 0.6, V0 = 1, sigma = 10,
-               tau0 = 6.5, eta = 0.5;
+               eta = 0.5;
+  // The applied shear traction: tau_0 = 6.5, and in the velocity-step
+  // case 6.75 from t = 1.5 on.
+  double step_time = 1e300, tau_step = 0.25;
+  double
+  applied(const double t)
+  {
+    return 6.5 + (t >= step_time ? tau_step : 0.);
+  }
 
   double
   mu(const double V, const double theta)
@@ -41,7 +51,7 @@ namespace
 
   // The slip rate for the state theta: tau0 - eta V = sigma mu(V, theta).
   double
-  rate(const double theta)
+  rate(const double theta, const double tau0)
   {
     double lower = 0, upper = tau0 / eta;
     for (unsigned int i = 0; i < 64; ++i)
@@ -60,24 +70,41 @@ namespace
     double V, slip, tau;
   };
 
-  Reference
-  reference(const double t_end)
+  // Integrates over [t0, t1] at the constant traction tau0.
+  void
+  integrate(const double t0,
+            const double t1,
+            const double tau0,
+            double      &theta,
+            double      &slip)
   {
-    const unsigned int n     = std::max(1., std::ceil(t_end / 1e-4));
-    const double       dt    = t_end / n;
-    double             theta = 1, slip = 0;
-    const auto f = [](const double th) { return 1 - rate(th) * th / L; };
+    if (t1 <= t0)
+      return;
+    const unsigned int n  = std::max(1., std::ceil((t1 - t0) / 1e-4));
+    const double       dt = (t1 - t0) / n;
+    const auto         f  = [tau0](const double th) {
+      return 1 - rate(th, tau0) * th / L;
+    };
     for (unsigned int i = 0; i < n; ++i)
       {
         // RK4 for theta, Simpson's rule for the slip.
         const double k1 = f(theta), k2 = f(theta + 0.5 * dt * k1),
                      k3 = f(theta + 0.5 * dt * k2), k4 = f(theta + dt * k3);
-        const double v0 = rate(theta);
-        const double vm = rate(theta + 0.25 * dt * (k1 + k2));
+        const double v0 = rate(theta, tau0);
+        const double vm = rate(theta + 0.25 * dt * (k1 + k2), tau0);
         theta += dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
-        slip += dt / 6 * (v0 + 4 * vm + rate(theta));
+        slip += dt / 6 * (v0 + 4 * vm + rate(theta, tau0));
       }
-    const double V = rate(theta);
+  }
+
+  Reference
+  reference(const double t_end)
+  {
+    double theta = 1, slip = 0;
+    integrate(0, std::min(t_end, step_time), applied(0), theta, slip);
+    integrate(step_time, t_end, applied(t_end), theta, slip);
+    const double tau0 = applied(t_end);
+    const double V    = rate(theta, tau0);
     return {V, slip, tau0 - eta * V};
   }
 } // namespace
@@ -224,5 +251,100 @@ main(int argc, char **argv)
       std::printf("%s, no nucleation: largest slip below 1e-10: %s\n",
                   names[m],
                   largest < 1e-10 ? "yes" : "NO");
+    }
+
+  // A velocity step: at t = 1.5, in the steady state at V = 1, the shear
+  // traction steps up by 0.25. The slip rate jumps at once (the direct
+  // effect a, at the state theta = L/V of before) and then evolves over
+  // about L / V to the new steady state (a - b < 0: the steady friction
+  // falls with V, so the new rate is above the direct jump). Both methods
+  // against the reference: mean slip rates over windows, the slip (1 %)
+  // and the traction (0.5 %) at 1.6, 1.8 and 2.5.
+  step_time = 1.5;
+  {
+    const Reference jump = reference(1.5 + 1e-9), late = reference(2.5);
+    std::printf("velocity step at t = 1.5: reference slip rate 1 -> %.4f "
+                "(direct effect) -> %.4f (new steady state)\n",
+                jump.V,
+                late.V);
+  }
+  const std::vector<std::string> velocity_step = {
+    "--set",
+    "Fault/Traction perturbation/Traction=0.25; 0",
+    "--set",
+    "Fault/Traction perturbation/Time function=(t >= 1.5) ? 1 : 0",
+    "--set",
+    "Time integration/End time=2.5"};
+  for (unsigned int m = 0; m < 2; ++m)
+    {
+      std::vector<std::string> args = {prm};
+      args.insert(args.end(), law.begin(), law.end());
+      args.insert(args.end(), velocity_step.begin(), velocity_step.end());
+      args.insert(args.end(), methods[m].begin(), methods[m].end());
+      std::string errors;
+      std::printf("%s, velocity step:\n", names[m]);
+      if (tests::run_capture(args, errors) != 0)
+        {
+          std::printf("  run failed: %s\n", errors.c_str());
+          continue;
+        }
+      const auto rows = tests::read_statistics("output-plane-wave/statistics");
+      // The slip at time t, interpolated between the steps around it.
+      const auto slip_at = [&](const double t) {
+        for (unsigned int i = 1; i < rows.size(); ++i)
+          if (rows[i][1] >= t)
+            {
+              const double w =
+                (t - rows[i - 1][1]) / (rows[i][1] - rows[i - 1][1]);
+              return (1 - w) * rows[i - 1][slip] + w * rows[i][slip];
+            }
+        return rows.back()[slip];
+      };
+      const auto close = [](const double x, const double y, const double tol) {
+        return std::abs(x - y) <= tol * std::abs(y) ? "yes" : "NO";
+      };
+      // The slip rate of a single step rings after the sudden step (by
+      // some 5 % in the explicit method), so the rates compared are means
+      // over a window: [1.5, 1.6] holds the direct jump and most of the
+      // evolution (without the direct effect it would be near 1), [2, 2.5]
+      // the new steady state.
+      for (const auto &[t1, t2, tol] :
+           {std::array<double, 3>{{1.5, 1.6, 0.01}},
+            std::array<double, 3>{{2.0, 2.5, 0.01}}})
+        {
+          const double ours = (slip_at(t2) - slip_at(t1)) / (t2 - t1);
+          const double ref =
+            (reference(t2).slip - reference(t1).slip) / (t2 - t1);
+          if (std::getenv("RUPTURE_VERBOSE"))
+            std::printf("  [mean rate %.4f ref %.4f]\n", ours, ref);
+          std::printf("  mean slip rate over [%.1f, %.1f]: %s\n",
+                      t1,
+                      t2,
+                      close(ours, ref, tol));
+        }
+      for (const double t : {1.6, 1.8, 2.5})
+        {
+          const std::vector<double> *row = nullptr;
+          for (const auto &r : rows)
+            if (r[1] >= t - 1e-9)
+              {
+                row = &r;
+                break;
+              }
+          if (!row)
+            continue;
+          const Reference ref = reference((*row)[1]);
+          if (std::getenv("RUPTURE_VERBOSE"))
+            std::printf("  [t %.4f: slip %.4f ref %.4f; tau %.4f ref %.4f]\n",
+                        (*row)[1],
+                        slip_at(t),
+                        reference(t).slip,
+                        std::abs((*row)[shear]),
+                        ref.tau);
+          std::printf("  t = %.1f: slip %s, shear traction %s\n",
+                      t,
+                      close(slip_at(t), reference(t).slip, 0.01),
+                      close(std::abs((*row)[shear]), ref.tau, 0.005));
+        }
     }
 }

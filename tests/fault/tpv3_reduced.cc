@@ -47,7 +47,7 @@ main(int argc, char **argv)
                   "Time integration/End time=6"}) != 0)
     std::printf("run failed\n");
 
-  // The reference (shared/reference/tpv3) is kept with the tests, so
+  // The SCEC reference is kept with the tests (inputs/), so
   // that the test does not depend on where the clone lives. Both measures
   // of our rupture time: from the node rupture times around the station
   // (rupture_time.dat, the default) and from the station's series.

@@ -149,6 +149,24 @@ main(int argc, char **argv)
           "coefficient = 0.5\n    set Dynamic friction coefficient = 0.6\n"
           "  end\nend\n");
 
+  write("empty.prm", "");
+  write("comments_only.prm", "# a parameter file\n\n# with nothing set\n");
+  std::filesystem::create_directories("directory.prm");
+  write("gmsh_version.msh",
+        "$MeshFormat\n3.0 0 8\n$EndMeshFormat\n$Nodes\n0\n$EndNodes\n");
+  write("gmsh_header_body.msh",
+        "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
+        "2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n1\n1 3 2 0 1 "
+        "1 2 3 4\n$EndElements\n");
+  const std::string gmsh =
+    "subsection Scene\n  set Model = gmsh\n  subsection Gmsh\n"
+    "    set Mesh file = ";
+  write("gmsh_version.prm", base + gmsh + "gmsh_version.msh\n  end\nend\n");
+  write("gmsh_header_body.prm",
+        base + gmsh + "gmsh_header_body.msh\n  end\nend\n");
+  write("fault_region_nan.prm",
+        base + fault + "  set Fault region = 0/0\nend\n");
+
   check("unknown entry", {"unknown_entry.prm"});
   check("malformed value", {"malformed_value.prm"});
   check("dimension out of range", {"bad_dimension.prm"});
@@ -215,6 +233,19 @@ main(int argc, char **argv)
         {"valid.prm", "--set", "Time integration/End time=soon"});
   check("--set with a non-physical value",
         {"valid.prm", "--set", "Time integration/End time=-1"});
+  check("--set without an entry", {"valid.prm", "--set", "=1"});
+  check("--set with an empty path part",
+        {"valid.prm", "--set", "Time integration//End time=1"});
+  check("empty parameter file", {"empty.prm"});
+  check("parameter file of comments only", {"comments_only.prm"});
+  check("parameter file that is a directory", {"directory.prm"});
+  check("output directory at the root of the file system",
+        {"valid.prm", "--set", "Output directory=/"});
+  check("output directory that is a file",
+        {"valid.prm", "--set", "Output directory=valid.prm"});
+  check("Gmsh format 3.0", {"gmsh_version.prm"});
+  check("Gmsh header 4.1 over a 2.2 body", {"gmsh_header_body.prm"});
+  check("fault region that is not finite", {"fault_region_nan.prm"});
 
   std::printf("* earlier results kept: %s\n",
               tests::read_file("earlier-run/statistics") ==

@@ -2,6 +2,7 @@
 #define rupture_fault_fault_output_h
 
 #include <rupture/fault/fault.h>
+#include <rupture/output/directory.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -48,6 +49,19 @@ namespace rupture
       surface_interval(const double volume_interval) const;
 
       /**
+       * The stations' names (each writes <name>.dat, beside the fault's
+       * rupture_time.dat).
+       */
+      std::vector<std::string>
+      station_names() const
+      {
+        std::vector<std::string> result;
+        for (const auto &s : stations)
+          result.push_back(s.name);
+        return result;
+      }
+
+      /**
        * Locate the stations on the fault (an error names a station that is
        * not on it) and set the strike and dip directions.
        */
@@ -72,7 +86,7 @@ namespace rupture
        */
       void
       write_surface(const Fault<dim>  &fault,
-                    const std::string &directory,
+                    Output::Directory &directory,
                     const double       time,
                     const unsigned int step);
 
@@ -81,7 +95,7 @@ namespace rupture
        */
       void
       write_tables(const Fault<dim>  &fault,
-                   const std::string &directory,
+                   Output::Directory &directory,
                    const double       time_step,
                    const bool         test_mode) const;
 

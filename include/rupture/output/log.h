@@ -16,7 +16,8 @@ namespace rupture
      * The screen stream of rank 0, mirrored into <output>/log.txt. Until the
      * output directory is known to be safe to write (the input has been
      * checked), lines are kept in memory; attach_file() writes them out and
-     * mirrors everything after.
+     * mirrors everything after. Both the screen and the file are flushed
+     * at the end of every line.
      */
     class Log
     {

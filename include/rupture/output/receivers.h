@@ -1,6 +1,8 @@
 #ifndef rupture_output_receivers_h
 #define rupture_output_receivers_h
 
+#include <rupture/output/directory.h>
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -41,6 +43,16 @@ namespace rupture
         return receivers.empty();
       }
 
+      /// The receivers' names (each writes <name>.dat).
+      std::vector<std::string>
+      names() const
+      {
+        std::vector<std::string> result;
+        for (const auto &r : receivers)
+          result.push_back(r.name);
+        return result;
+      }
+
       /**
        * Find the cell of each receiver. A receiver on a split fault is
        * taken on the side of the cell found first; receivers are meant to
@@ -66,7 +78,7 @@ namespace rupture
 
       /// Write all rows so far (rank 0), replacing the files.
       void
-      write(const std::string &output_directory, const double time_step) const;
+      write(Directory &directory, const double time_step) const;
 
     private:
       struct Receiver

@@ -2,6 +2,7 @@
 #define rupture_output_volume_output_h
 
 #include <rupture/material/elastic_material.h>
+#include <rupture/output/directory.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -34,7 +35,7 @@ namespace rupture
        * @p cells_per_piece cells (one .vtu file each, all listed in the
        * step's .pvtu), so that the memory of a snapshot stays bounded.
        */
-      VolumeOutput(const std::string                &output_directory,
+      VolumeOutput(Directory                        &directory,
                    const Material::ElasticMaterials &materials,
                    const unsigned int                cells_per_piece,
                    const MPI_Comm                    communicator);
@@ -47,7 +48,7 @@ namespace rupture
             const unsigned int                   step);
 
     private:
-      const std::string                           directory;
+      Directory                                  &directory;
       const Material::ElasticMaterials           &materials;
       const unsigned int                          cells_per_piece;
       const MPI_Comm                              communicator;

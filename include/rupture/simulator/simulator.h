@@ -7,6 +7,7 @@
 #include <rupture/material/elastic_material.h>
 #include <rupture/operators/elastic_operator.h>
 #include <rupture/operators/multigrid.h>
+#include <rupture/output/directory.h>
 #include <rupture/output/log.h>
 #include <rupture/output/receivers.h>
 #include <rupture/output/statistics.h>
@@ -291,6 +292,14 @@ namespace rupture
     check_explicit_energy_balance() const;
 
     // --- output (simulator.cc) ---
+    /**
+     * Write what is due after a step: the volume and the fault surface at
+     * their intervals; receivers, fault tables and statistics with them
+     * and at least once a minute of wall time. With @p force (the first
+     * and last step) everything. Collective: it also looks for a SIGTERM or
+     * SIGINT on any rank, and after one writes everything and throws
+     * Interruption::Stopped.
+     */
     void
     write_step_output(const bool force);
     std::vector<double>
@@ -312,9 +321,10 @@ namespace rupture
     mutable TimerOutput timer;
 
     // Parameters.
-    std::string  output_directory;
-    bool         test_mode;
-    unsigned int n_global_refinements;
+    /// The output directory: its lock, manifest and atomic files.
+    std::unique_ptr<Output::Directory> output_directory;
+    bool                               test_mode;
+    unsigned int                       n_global_refinements;
     // <Discretization/Refinement region> and its number of levels.
     std::unique_ptr<FunctionParser<dim>> refinement_region;
     unsigned int                         n_region_refinements;
@@ -492,7 +502,11 @@ namespace rupture
     /// Resident memory (bytes, all ranks) after each set-up stage.
     std::vector<std::pair<std::string, double>> memory_by_stage;
     double                                      next_output_time;
-    double                                      next_fault_output_time = 0;
+    /// Wall time (MPI_Wtime) of the last write of the tables: receivers,
+    /// fault stations and statistics reach the disk at least once a
+    /// minute, whatever the output interval.
+    double last_table_write       = 0;
+    double next_fault_output_time = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     Output::Statistics                         statistics;
