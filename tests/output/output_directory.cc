@@ -218,12 +218,12 @@ main(int argc, char **argv)
               code,
               from(errors, "Error").c_str());
 
-  // 5. SIGTERM in the middle of a long run (500 000 steps): it ends after
+  // 5. SIGTERM 2 s into a long run (500 000 steps): it ends after
   //    the step it is in, with every file written and complete.
   std::thread signaller;
   if (root)
     signaller = std::thread([]() {
-      std::this_thread::sleep_for(std::chrono::milliseconds(500));
+      std::this_thread::sleep_for(std::chrono::milliseconds(2000));
       ::kill(::getpid(), SIGTERM);
     });
   code = run(input(5000.), MPI_COMM_WORLD, errors);
