@@ -58,14 +58,6 @@ namespace rupture
 
 
 
-    void
-    clear()
-    {
-      signal_received = 0;
-    }
-
-
-
     std::string
     signal_name(const int signal)
     {

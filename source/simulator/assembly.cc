@@ -340,6 +340,7 @@ namespace rupture
                                                 consistent_mass_diagonal);
         if (absorbing_factor != 0 && has_absorbing)
           system_diagonal.add(absorbing_factor, absorbing_damping);
+        max_system_diagonal = system_diagonal.linfty_norm();
         return;
       }
     TimerOutput::Scope t(timer, "Assemble system matrix");
@@ -373,6 +374,13 @@ namespace rupture
             }
         system_matrix.compress(VectorOperation::add);
       }
+
+    max_system_diagonal = 0;
+    for (const auto i : locally_owned_dofs)
+      max_system_diagonal =
+        std::max(max_system_diagonal, std::abs(system_matrix.diag_element(i)));
+    max_system_diagonal =
+      dealii::Utilities::MPI::max(max_system_diagonal, communicator);
 
     linear_solver.initialize(system_matrix,
                              rigid_body_modes(),

@@ -157,23 +157,12 @@ namespace rupture
                 increment_constraints.set_zero(scratch);
                 // A prestressed fault at rest: the forces of its initial
                 // traction.
-                reference           = std::max({norm,
-                                                scratch.l2_norm(),
-                                                fault->initial_force_norm(),
-                                                1e-300});
-                double max_diagonal = 0;
-                if (linear_solver.matrix_free())
-                  max_diagonal = system_diagonal.linfty_norm();
-                else
-                  {
-                    for (const auto i : locally_owned_dofs)
-                      max_diagonal =
-                        std::max(max_diagonal,
-                                 std::abs(system_matrix.diag_element(i)));
-                    max_diagonal =
-                      dealii::Utilities::MPI::max(max_diagonal, communicator);
-                  }
-                displacement_scale = reference / std::max(max_diagonal, 1e-300);
+                reference = std::max({norm,
+                                      scratch.l2_norm(),
+                                      fault->initial_force_norm(),
+                                      1e-300});
+                displacement_scale =
+                  reference / std::max(max_system_diagonal, 1e-300);
               }
             else
               {

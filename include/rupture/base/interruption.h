@@ -37,12 +37,6 @@ namespace rupture
     requested();
 
     /**
-     * Forget a request (for the next run of the program in one process).
-     */
-    void
-    clear();
-
-    /**
      * The name of a signal ("SIGTERM").
      */
     std::string

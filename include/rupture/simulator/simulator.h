@@ -505,7 +505,11 @@ namespace rupture
     /// Wall time (MPI_Wtime) of the last write of the tables: receivers,
     /// fault stations and statistics reach the disk at least once a
     /// minute, whatever the output interval.
-    double last_table_write       = 0;
+    double last_table_write = 0;
+    /// The largest diagonal entry of the effective system (without the
+    /// contact), set where the system is assembled: Newton's displacement
+    /// scale for its round-off floor.
+    double max_system_diagonal    = 0;
     double next_fault_output_time = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
