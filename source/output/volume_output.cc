@@ -1,13 +1,17 @@
 #include <rupture/base/utilities.h>
 #include <rupture/output/volume_output.h>
+#include <rupture/output/vtu_file.h>
 
 #include <deal.II/base/data_out_base.h>
-#include <deal.II/numerics/data_out.h>
-#include <deal.II/numerics/data_postprocessor.h>
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/lac/trilinos_index_access.h>
+
+#include <Epetra_MultiVector.h>
 
 #include <algorithm>
+#include <array>
 #include <sstream>
-#include <vector>
 
 namespace rupture
 {
@@ -15,107 +19,87 @@ namespace rupture
   {
     namespace
     {
+      const std::vector<std::string> field_names = {"displacement",
+                                                    "velocity",
+                                                    "stress",
+                                                    "material_id",
+                                                    "mpi_rank"};
+
       /**
-       * Sums the sides of a (possibly split) displacement-like field and,
-       * optionally, computes the stress from its gradient.
+       * What one finite element of the collection needs for the output:
+       * the physical component of each of its DoFs, the gradient of each
+       * shape function at the centre of the reference cell, and the DoF of
+       * each component at each vertex. With a split fault the element
+       * carries the displacement on one side: its components i and i + dim
+       * are the same physical component, and only one side has DoFs.
        */
       template <int dim>
-      class FieldPostprocessor : public DataPostprocessor<dim>
+      struct ElementTable
       {
-      public:
-        FieldPostprocessor(const std::string                &name,
-                           const bool                        with_stress,
-                           const Material::ElasticMaterials *materials)
-          : name(name)
-          , with_stress(with_stress)
-          , materials(materials)
-        {}
+        std::vector<unsigned int>   component;
+        std::vector<Tensor<1, dim>> gradient;
+        std::array<std::array<unsigned int, dim>,
+                   GeometryInfo<dim>::vertices_per_cell>
+          vertex_dof;
+      };
+
+      /**
+       * The pieces' arrays, filled cell by cell.
+       */
+      struct PieceArrays
+      {
+        std::vector<float>        points, displacement, velocity, stress;
+        std::vector<std::int32_t> connectivity, offsets, material_id, rank;
+        std::vector<std::uint8_t> types;
+        /// The local (Epetra) indices whose point number was set.
+        std::vector<int> touched;
 
         void
-        evaluate_vector_field(
-          const DataPostprocessorInputs::Vector<dim> &inputs,
-          std::vector<Vector<double>>                &computed) const override
+        clear()
         {
-          const unsigned int n_q     = inputs.solution_values.size();
-          const unsigned int n_sides = inputs.solution_values[0].size() / dim;
-          const auto         cell    = inputs.template get_cell<dim>();
-          const auto        &m       = materials->get(cell->material_id());
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              Tensor<2, dim> grad;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  double value = 0;
-                  for (unsigned int s = 0; s < n_sides; ++s)
-                    {
-                      value += inputs.solution_values[q][s * dim + d];
-                      if (with_stress)
-                        grad[d] += inputs.solution_gradients[q][s * dim + d];
-                    }
-                  computed[q][d] = value;
-                }
-              if (with_stress)
-                {
-                  const Tensor<2, dim> strain = 0.5 * (grad + transpose(grad));
-                  const Tensor<2, dim> stress =
-                    m.lambda * trace(strain) * unit_symmetric_tensor<dim>() +
-                    2 * m.mu * strain;
-                  for (unsigned int i = 0; i < dim; ++i)
-                    for (unsigned int j = 0; j < dim; ++j)
-                      computed[q][dim + i * dim + j] = stress[i][j];
-                }
-            }
+          for (auto *v : {&points, &displacement, &velocity, &stress})
+            v->clear();
+          for (auto *v : {&connectivity, &offsets, &material_id, &rank})
+            v->clear();
+          types.clear();
+          touched.clear();
         }
-
-        std::vector<std::string>
-        get_names() const override
-        {
-          std::vector<std::string> names(dim, name);
-          if (with_stress)
-            for (unsigned int i = 0; i < dim * dim; ++i)
-              names.emplace_back("stress");
-          return names;
-        }
-
-        std::vector<DataComponentInterpretation::DataComponentInterpretation>
-        get_data_component_interpretation() const override
-        {
-          std::vector<DataComponentInterpretation::DataComponentInterpretation>
-            result(dim,
-                   DataComponentInterpretation::component_is_part_of_vector);
-          if (with_stress)
-            for (unsigned int i = 0; i < dim * dim; ++i)
-              result.push_back(
-                DataComponentInterpretation::component_is_part_of_tensor);
-          return result;
-        }
-
-        UpdateFlags
-        get_needed_update_flags() const override
-        {
-          return with_stress ? (update_values | update_gradients) :
-                               update_values;
-        }
-
-      private:
-        const std::string                 name;
-        const bool                        with_stress;
-        const Material::ElasticMaterials *materials;
       };
     } // namespace
 
 
 
     template <int dim>
+    const std::vector<std::string> &
+    VolumeOutput<dim>::available_fields()
+    {
+      return field_names;
+    }
+
+
+
+    template <int dim>
     VolumeOutput<dim>::VolumeOutput(Directory                        &directory,
                                     const Material::ElasticMaterials &materials,
+                                    const std::vector<std::string>   &fields,
+                                    const Compression  compression,
                                     const unsigned int cells_per_piece,
                                     const MPI_Comm     communicator)
       : directory(directory)
       , materials(materials)
+      , compression(compression)
       , cells_per_piece(cells_per_piece)
       , communicator(communicator)
-    {}
+    {
+      for (const auto &f : fields)
+        {
+          const auto at = std::find(field_names.begin(), field_names.end(), f);
+          AssertThrow(at != field_names.end(),
+                      ExcMessage("<Output/Volume fields>: unknown field '" + f +
+                                 "'."));
+          write_field[at - field_names.begin()] = true;
+        }
+    }
 
 
 
@@ -127,43 +111,80 @@ namespace rupture
                              const double                         time,
                              const unsigned int                   step)
     {
-      FieldPostprocessor<dim> displacement_out("displacement",
-                                               true,
-                                               &materials);
-      FieldPostprocessor<dim> velocity_out("velocity", false, &materials);
+      constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+      const bool             with_displacement = write_field[0];
+      const bool             with_velocity     = write_field[1];
+      const bool             with_stress       = write_field[2];
+      const bool             with_material_id  = write_field[3];
+      const bool             with_rank         = write_field[4];
+
+      // The tables of each element of the collection.
+      Point<dim> centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = 0.5;
+      const auto                    &fes = dof_handler.get_fe_collection();
+      std::vector<ElementTable<dim>> tables(fes.size());
+      for (unsigned int f = 0; f < fes.size(); ++f)
+        {
+          const FiniteElement<dim> &fe = fes[f];
+          if (fe.n_dofs_per_cell() == 0)
+            continue;
+          AssertThrow(fe.n_dofs_per_vertex() == dim,
+                      ExcMessage("Volume output: each vertex must carry the "
+                                 "dim components of the displacement."));
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const unsigned int c =
+                fe.system_to_component_index(i).first % dim;
+              tables[f].component.push_back(c);
+              tables[f].gradient.push_back(fe.shape_grad(i, centre));
+              if (i < n_vertices * dim)
+                tables[f].vertex_dof[i / dim][c] = i;
+            }
+        }
+      // The gradients of the vertices' (Q1 mapping) shape functions at the
+      // centre: the Jacobian there.
+      std::array<Tensor<1, dim>, n_vertices> vertex_gradient;
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        vertex_gradient[v] =
+          GeometryInfo<dim>::d_linear_shape_function_gradient(centre, v);
+
+      // Values are read through the vectors' local (ghosted) layout.
+      const Epetra_BlockMap &map = displacement.trilinos_vector().Map();
+      AssertThrow(map.SameAs(velocity.trilinos_vector().Map()),
+                  ExcInternalError());
+      const double *u_values = displacement.trilinos_vector()[0];
+      const double *v_values = velocity.trilinos_vector()[0];
+      // The locally owned DoFs are one contiguous range, and so are their
+      // local indices (the layout is sorted by global index): those are
+      // found by an offset, only the ghosts by the map's search.
+      const IndexSet owned = displacement.locally_owned_elements();
+      const types::global_dof_index first_owned =
+        owned.n_elements() > 0 ? owned.nth_index_in_set(0) : 0;
+      const types::global_dof_index end_owned =
+        first_owned + owned.n_elements();
+      const auto lid = [&map](const types::global_dof_index i) {
+        return map.LID(static_cast<TrilinosWrappers::types::int_type>(i));
+      };
+      const bool contiguous = owned.is_contiguous() && owned.n_elements() > 0 &&
+                              lid(end_owned - 1) - lid(first_owned) ==
+                                static_cast<int>(owned.n_elements()) - 1;
+      const int  first_lid = contiguous ? lid(first_owned) : 0;
+      const auto local     = [&](const types::global_dof_index i) {
+        return (contiguous && i >= first_owned && i < end_owned) ?
+                     first_lid + static_cast<int>(i - first_owned) :
+                     lid(i);
+      };
+      // The point of each local DoF in the current piece, or -1.
+      std::vector<int> point_of(map.NumMyElements(), -1);
 
       const auto        &tria = dof_handler.get_triangulation();
-      Vector<float>      material_id(tria.n_active_cells());
-      Vector<float>      rank(tria.n_active_cells());
       const unsigned int my_rank =
         dealii::Utilities::MPI::this_mpi_process(communicator);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            material_id(cell->active_cell_index()) = cell->material_id();
-            rank(cell->active_cell_index())        = my_rank;
-          }
-
-      // The cells are written in pieces of at most cells_per_piece cells,
-      // each from its own DataOut, so that the memory of a snapshot stays
-      // bounded (one DataOut of the whole mesh took about 1 kB per DoF,
-      // more than the whole run).
-      // Pieces are numbered across the ranks; with one piece per rank the
-      // files are those of DataOut::write_vtu_with_pvtu_record().
-      // The owned cells of each piece, in order, and each cell's place.
-      std::vector<std::vector<typename Triangulation<dim>::cell_iterator>>
-                                pieces;
-      std::vector<unsigned int> place(tria.n_active_cells(), 0);
-      unsigned int              n_owned = 0;
+      unsigned int n_owned = 0;
       for (const auto &cell : tria.active_cell_iterators())
         if (cell->is_locally_owned())
-          {
-            if (n_owned % cells_per_piece == 0)
-              pieces.emplace_back();
-            place[cell->active_cell_index()] = pieces.back().size();
-            pieces.back().push_back(cell);
-            ++n_owned;
-          }
+          ++n_owned;
       const unsigned int n_pieces =
         std::max(1u, (n_owned + cells_per_piece - 1) / cells_per_piece);
       unsigned int pieces_so_far = 0;
@@ -180,66 +201,141 @@ namespace rupture
         return "solution_" + step_name + "." + std::to_string(piece) + ".vtu";
       };
 
-      for (unsigned int piece = 0; piece < n_pieces; ++piece)
-        {
-          DataOut<dim> data_out;
-          // Walks this piece's cells only (a filter would walk every cell
-          // of every level for each piece).
-          if (piece < pieces.size())
-            {
-              const auto &cells = pieces[piece];
-              data_out.set_cell_selection(
-                [&cells](const Triangulation<dim> &) { return cells[0]; },
-                [&cells, &place](
-                  const Triangulation<dim>                         &t,
-                  const typename Triangulation<dim>::cell_iterator &cell) {
-                  const unsigned int next =
-                    place[cell->active_cell_index()] + 1;
-                  return next < cells.size() ?
-                           cells[next] :
-                           typename Triangulation<dim>::cell_iterator(t.end());
-                });
-            }
-          else
-            // No owned cells: an empty piece.
-            data_out.set_cell_selection(
-              [](const Triangulation<dim> &t) { return t.end(); },
-              [](const Triangulation<dim> &t,
-                 const typename Triangulation<dim>::cell_iterator &) {
-                return t.end();
-              });
-          data_out.attach_dof_handler(dof_handler);
-          data_out.add_data_vector(displacement, displacement_out);
-          data_out.add_data_vector(velocity, velocity_out);
-          data_out.add_data_vector(material_id, "material_id");
-          data_out.add_data_vector(rank, "mpi_rank");
-          data_out.build_patches();
+      // Each rank writes its cells in pieces of at most cells_per_piece
+      // cells, so that the memory of a snapshot stays bounded. Points are
+      // shared by the cells of a piece: one point per vertex and side of
+      // the fault (the key is the vertex's first DoF). The stress is a cell
+      // field, at the centre of each cell.
+      PieceArrays  a;
+      unsigned int piece = 0;
+      const auto   flush = [&]() {
+        const std::uint64_t n_points       = a.points.size() / 3;
+        const std::uint64_t n_cells        = a.types.size();
+        const bool          deflate_fields = (compression == Compression::all);
+        VtuFile             file(
+          n_points, n_cells, time, step, compression != Compression::none);
+        file.add(VtuFile::Section::points, "Points", 3, a.points);
+        file.add(VtuFile::Section::cells, "connectivity", 1, a.connectivity);
+        file.add(VtuFile::Section::cells, "offsets", 1, a.offsets);
+        file.add(VtuFile::Section::cells, "types", 1, a.types);
+        if (with_displacement)
+          file.add(VtuFile::Section::point_data,
+                   "displacement",
+                   3,
+                   a.displacement,
+                   deflate_fields);
+        if (with_velocity)
+          file.add(VtuFile::Section::point_data,
+                   "velocity",
+                   3,
+                   a.velocity,
+                   deflate_fields);
+        if (with_stress)
+          file.add(
+            VtuFile::Section::cell_data, "stress", 9, a.stress, deflate_fields);
+        if (with_material_id)
+          file.add(VtuFile::Section::cell_data,
+                   "material_id",
+                   1,
+                   a.material_id);
+        if (with_rank)
+          file.add(VtuFile::Section::cell_data, "mpi_rank", 1, a.rank);
+        directory.write("solution/" + piece_name(first_piece + piece),
+                        file.str());
+        if (my_rank == 0 && piece == 0)
+          {
+            std::vector<std::string> names;
+            for (unsigned int i = 0; i < n_all_pieces; ++i)
+              names.push_back(piece_name(i));
+            directory.write("solution/" + pvtu, file.pvtu_record(names));
+          }
+        for (const int i : a.touched)
+          point_of[i] = -1;
+        a.clear();
+        ++piece;
+      };
 
-          DataOutBase::VtkFlags flags;
-          flags.time  = time;
-          flags.cycle = step;
-          // deal.II 9.4 compresses best by default: several times slower
-          // for files some 10 % smaller.
-          flags.compression_level = DataOutBase::VtkFlags::best_speed;
-          data_out.set_flags(flags);
+      // deal.II's lexicographic vertex order to VTK's.
+      const std::array<unsigned int, 8> vtk_order = {{0, 1, 3, 2, 4, 5, 7, 6}};
+      std::vector<types::global_dof_index> dofs;
+      std::vector<int>                     lids;
+      unsigned int                         n_in_piece = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const unsigned int       f     = cell->active_fe_index();
+            const ElementTable<dim> &table = tables[f];
+            dofs.resize(table.component.size());
+            cell->get_dof_indices(dofs);
+            lids.resize(dofs.size());
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              lids[i] = local(dofs[i]);
 
-          std::ostringstream vtu;
-          data_out.write_vtu(vtu);
-          directory.write("solution/" + piece_name(first_piece + piece),
-                          vtu.str());
-          if (my_rank == 0 && piece == 0)
-            {
-              std::vector<std::string> names;
-              for (unsigned int i = 0; i < n_all_pieces; ++i)
-                names.push_back(piece_name(i));
-              std::ostringstream record;
-              data_out.write_pvtu_record(record, names);
-              directory.write("solution/" + pvtu, record.str());
-            }
-        }
+            for (unsigned int k = 0; k < n_vertices; ++k)
+              {
+                const unsigned int v   = vtk_order[k];
+                const int          key = lids[table.vertex_dof[v][0]];
+                if (point_of[key] < 0)
+                  {
+                    point_of[key] = a.points.size() / 3;
+                    a.touched.push_back(key);
+                    const Point<dim> &x = cell->vertex(v);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      {
+                        a.points.push_back(d < dim ? x[d] : 0.);
+                        const int l =
+                          d < dim ? lids[table.vertex_dof[v][d]] : -1;
+                        if (with_displacement)
+                          a.displacement.push_back(l < 0 ? 0. : u_values[l]);
+                        if (with_velocity)
+                          a.velocity.push_back(l < 0 ? 0. : v_values[l]);
+                      }
+                  }
+                a.connectivity.push_back(point_of[key]);
+              }
+            a.offsets.push_back(a.connectivity.size());
+            a.types.push_back(dim == 3 ? 12 : 9);
+
+            if (with_stress)
+              {
+                Tensor<2, dim> jacobian, reference_gradient;
+                for (unsigned int v = 0; v < n_vertices; ++v)
+                  jacobian += outer_product(Tensor<1, dim>(cell->vertex(v)),
+                                            vertex_gradient[v]);
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  reference_gradient[table.component[i]] +=
+                    u_values[lids[i]] * table.gradient[i];
+                const Tensor<2, dim> gradient =
+                  reference_gradient * invert(jacobian);
+                const auto          &m = materials.get(cell->material_id());
+                const Tensor<2, dim> strain =
+                  0.5 * (gradient + transpose(gradient));
+                const Tensor<2, dim> stress =
+                  m.lambda * trace(strain) * unit_symmetric_tensor<dim>() +
+                  2 * m.mu * strain;
+                for (unsigned int i = 0; i < 3; ++i)
+                  for (unsigned int j = 0; j < 3; ++j)
+                    a.stress.push_back(i < dim && j < dim ? stress[i][j] : 0.);
+              }
+            if (with_material_id)
+              a.material_id.push_back(cell->material_id());
+            if (with_rank)
+              a.rank.push_back(my_rank);
+
+            if (++n_in_piece == cells_per_piece)
+              {
+                flush();
+                n_in_piece = 0;
+              }
+          }
+      // The last, partial piece, or the empty piece of a rank without
+      // cells.
+      if (n_in_piece > 0 || piece == 0)
+        flush();
+      AssertThrow(piece == n_pieces, ExcInternalError());
       records.emplace_back(time, "solution/" + pvtu);
 
-      if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      if (my_rank == 0)
         {
           std::ostringstream pvd;
           DataOutBase::write_pvd_record(pvd, records);

@@ -111,8 +111,13 @@ namespace rupture
       pcout << "   Output directory: " << output_directory->absolute_name()
             << std::endl;
     output_prepared = true;
-    volume_output   = std::make_unique<Output::VolumeOutput<dim>>(
-      *output_directory, materials, cells_per_output_piece, communicator);
+    volume_output =
+      std::make_unique<Output::VolumeOutput<dim>>(*output_directory,
+                                                  materials,
+                                                  volume_fields,
+                                                  output_compression,
+                                                  cells_per_output_piece,
+                                                  communicator);
   }
 
 
@@ -536,14 +541,13 @@ namespace rupture
     receivers->write(*output_directory, time_step);
     if (volume_due)
       {
-        VectorType u_ghost(locally_owned_dofs,
-                           locally_relevant_dofs,
-                           communicator);
-        VectorType v_ghost(locally_owned_dofs,
-                           locally_relevant_dofs,
-                           communicator);
-        u_ghost = displacement;
-        v_ghost = velocity;
+        // The ghosted copies are made at the first snapshot and kept (a
+        // run without volume output never pays for them).
+        if (!output_ghosts)
+          output_ghosts = std::make_unique<GhostedVectors>(
+            locally_owned_dofs, locally_relevant_dofs, communicator, 2);
+        const VectorType &u_ghost = output_ghosts->copy(0, displacement);
+        const VectorType &v_ghost = output_ghosts->copy(1, velocity);
         volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
         next_output_time = time + output_interval;
       }

@@ -93,14 +93,6 @@ namespace rupture
         /// The friction law's state fields (Friction::Interface::
         /// state_output()).
         std::vector<double> state_values;
-
-        template <class Archive>
-        void
-        serialize(Archive &ar, const unsigned int)
-        {
-          ar &key &location &normal &slip &slip_velocity &traction &slip_path
-            &friction &rupture_time &status &state_values;
-        }
       };
 
       static void

@@ -2,6 +2,7 @@
 #define rupture_simulator_simulator_h
 
 #include <rupture/base/constraint_distributor.h>
+#include <rupture/base/ghosted_vectors.h>
 #include <rupture/fault/fault.h>
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
@@ -344,10 +345,12 @@ namespace rupture
     double                                             gravity;
     double                                             output_interval;
     /// Simulated time between fault surface outputs (negative: none).
-    double                      fault_output_interval = -1;
-    unsigned int                cells_per_output_piece;
-    unsigned int                screen_interval;
-    TimeIntegration::Parameters time_parameters;
+    double                                          fault_output_interval = -1;
+    unsigned int                                    cells_per_output_piece;
+    std::vector<std::string>                        volume_fields;
+    typename Output::VolumeOutput<dim>::Compression output_compression;
+    unsigned int                                    screen_interval;
+    TimeIntegration::Parameters                     time_parameters;
     /// The scheme of the phase being run.
     TimeIntegration::Scheme              current_scheme;
     std::unique_ptr<FunctionParser<dim>> body_force;
@@ -513,7 +516,9 @@ namespace rupture
     double next_fault_output_time = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
-    Output::Statistics                         statistics;
+    /// The ghosted displacement and velocity of the volume snapshots.
+    std::unique_ptr<GhostedVectors> output_ghosts;
+    Output::Statistics              statistics;
   };
 } // namespace rupture
 
