@@ -26,10 +26,10 @@ namespace rupture
                                                     "mpi_rank"};
 
       /**
-       * What one finite element of the collection needs for the output:
-       * the physical component of each of its DoFs, the gradient of each
-       * shape function at the centre of the reference cell, and the DoF of
-       * each component at each vertex. With a split fault the element
+       * What one finite element of the collection needs for the stress:
+       * the physical component of each of its DoFs and the gradient of each
+       * shape function at the centre of the reference cell. With a split
+       * fault the element
        * carries the displacement on one side: its components i and i + dim
        * are the same physical component, and only one side has DoFs.
        */
@@ -43,28 +43,6 @@ namespace rupture
           vertex_dof;
       };
 
-      /**
-       * The pieces' arrays, filled cell by cell.
-       */
-      struct PieceArrays
-      {
-        std::vector<float>        points, displacement, velocity, stress;
-        std::vector<std::int32_t> connectivity, offsets, material_id, rank;
-        std::vector<std::uint8_t> types;
-        /// The local (Epetra) indices whose point number was set.
-        std::vector<int> touched;
-
-        void
-        clear()
-        {
-          for (auto *v : {&points, &displacement, &velocity, &stress})
-            v->clear();
-          for (auto *v : {&connectivity, &offsets, &material_id, &rank})
-            v->clear();
-          types.clear();
-          touched.clear();
-        }
-      };
     } // namespace
 
 
@@ -104,6 +82,132 @@ namespace rupture
 
 
     template <int dim>
+    VolumeOutput<dim>::~VolumeOutput()
+    {
+      tria_listener.disconnect();
+    }
+
+
+
+    template <int dim>
+    void
+    VolumeOutput<dim>::build_pieces(
+      const DoFHandler<dim>                             &dof_handler,
+      const std::function<int(types::global_dof_index)> &local,
+      const int                                          n_local)
+    {
+      constexpr unsigned int n_vertices = GeometryInfo<dim>::vertices_per_cell;
+      pieces.clear();
+      pieces_dof_handler = &dof_handler;
+      pieces_n_dofs      = dof_handler.n_dofs();
+      pieces_n_local     = n_local;
+      tria_listener.disconnect();
+      tria_listener =
+        dof_handler.get_triangulation().signals.any_change.connect(
+          [this]() { pieces.clear(); });
+
+      // The local DoF of each component at each vertex, per element.
+      const auto &fes = dof_handler.get_fe_collection();
+      std::vector<std::array<std::array<unsigned int, dim>, n_vertices>>
+        vertex_dof(fes.size());
+      for (unsigned int f = 0; f < fes.size(); ++f)
+        {
+          const FiniteElement<dim> &fe = fes[f];
+          if (fe.n_dofs_per_cell() == 0)
+            continue;
+          AssertThrow(fe.n_dofs_per_vertex() == dim,
+                      ExcMessage("Volume output: each vertex must carry the "
+                                 "dim components of the displacement."));
+          for (unsigned int i = 0; i < n_vertices * dim; ++i)
+            vertex_dof[f][i / dim]
+                      [fe.system_to_component_index(i).first % dim] = i;
+        }
+
+      // Points are shared by the cells of a piece: one point per vertex and
+      // side of the fault (the key is the vertex's first DoF).
+      const bool compress = (compression != Compression::none);
+      const std::array<unsigned int, 8> vtk_order = {{0, 1, 3, 2, 4, 5, 7, 6}};
+      std::vector<int>                  point_of(n_local, -1);
+      std::vector<int>                  touched;
+      std::vector<float>                points;
+      std::vector<types::global_dof_index> dofs;
+      const unsigned int                   my_rank =
+        dealii::Utilities::MPI::this_mpi_process(communicator);
+      const auto finish = [&]() {
+        Piece                    &p = pieces.back();
+        VtuFile                   encoder(0, 0, 0, 0, compress);
+        std::vector<std::int32_t> offsets(p.cells.size());
+        for (unsigned int c = 0; c < offsets.size(); ++c)
+          offsets[c] = (c + 1) * n_vertices;
+        const std::vector<std::uint8_t> types(p.cells.size(),
+                                              dim == 3 ? 12 : 9);
+        p.mesh = {encoder.add(VtuFile::Section::points, "Points", 3, points),
+                  encoder.add(
+                    VtuFile::Section::cells, "connectivity", 1, p.connectivity),
+                  encoder.add(VtuFile::Section::cells, "offsets", 1, offsets),
+                  encoder.add(VtuFile::Section::cells, "types", 1, types)};
+        std::vector<std::int32_t> values(p.cells.size());
+        if (write_field[3])
+          {
+            for (unsigned int c = 0; c < values.size(); ++c)
+              values[c] = p.cells[c]->material_id();
+            p.cell_fields.push_back(encoder.add(
+              VtuFile::Section::cell_data, "material_id", 1, values));
+          }
+        if (write_field[4])
+          {
+            std::fill(values.begin(), values.end(), my_rank);
+            p.cell_fields.push_back(
+              encoder.add(VtuFile::Section::cell_data, "mpi_rank", 1, values));
+          }
+        for (const int i : touched)
+          point_of[i] = -1;
+        touched.clear();
+        points.clear();
+      };
+
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            if (pieces.empty() || pieces.back().cells.size() == cells_per_piece)
+              {
+                if (!pieces.empty())
+                  finish();
+                pieces.emplace_back();
+              }
+            Piece             &p = pieces.back();
+            const unsigned int f = cell->active_fe_index();
+            dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            p.cells.push_back(cell);
+            for (unsigned int k = 0; k < n_vertices; ++k)
+              {
+                const unsigned int v   = vtk_order[k];
+                const int          key = local(dofs[vertex_dof[f][v][0]]);
+                if (point_of[key] < 0)
+                  {
+                    point_of[key] = p.point_dofs.size();
+                    touched.push_back(key);
+                    std::array<int, dim> point_dofs;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      point_dofs[d] = local(dofs[vertex_dof[f][v][d]]);
+                    p.point_dofs.push_back(point_dofs);
+                    const Point<dim> &x = cell->vertex(v);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      points.push_back(d < dim ? x[d] : 0.);
+                  }
+                p.connectivity.push_back(point_of[key]);
+              }
+          }
+      // A rank without cells writes one empty piece.
+      if (pieces.empty())
+        pieces.emplace_back();
+      finish();
+    }
+
+
+
+    template <int dim>
     void
     VolumeOutput<dim>::write(const DoFHandler<dim>               &dof_handler,
                              const TrilinosWrappers::MPI::Vector &displacement,
@@ -115,39 +219,6 @@ namespace rupture
       const bool             with_displacement = write_field[0];
       const bool             with_velocity     = write_field[1];
       const bool             with_stress       = write_field[2];
-      const bool             with_material_id  = write_field[3];
-      const bool             with_rank         = write_field[4];
-
-      // The tables of each element of the collection.
-      Point<dim> centre;
-      for (unsigned int d = 0; d < dim; ++d)
-        centre[d] = 0.5;
-      const auto                    &fes = dof_handler.get_fe_collection();
-      std::vector<ElementTable<dim>> tables(fes.size());
-      for (unsigned int f = 0; f < fes.size(); ++f)
-        {
-          const FiniteElement<dim> &fe = fes[f];
-          if (fe.n_dofs_per_cell() == 0)
-            continue;
-          AssertThrow(fe.n_dofs_per_vertex() == dim,
-                      ExcMessage("Volume output: each vertex must carry the "
-                                 "dim components of the displacement."));
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            {
-              const unsigned int c =
-                fe.system_to_component_index(i).first % dim;
-              tables[f].component.push_back(c);
-              tables[f].gradient.push_back(fe.shape_grad(i, centre));
-              if (i < n_vertices * dim)
-                tables[f].vertex_dof[i / dim][c] = i;
-            }
-        }
-      // The gradients of the vertices' (Q1 mapping) shape functions at the
-      // centre: the Jacobian there.
-      std::array<Tensor<1, dim>, n_vertices> vertex_gradient;
-      for (unsigned int v = 0; v < n_vertices; ++v)
-        vertex_gradient[v] =
-          GeometryInfo<dim>::d_linear_shape_function_gradient(centre, v);
 
       // Values are read through the vectors' local (ghosted) layout.
       const Epetra_BlockMap &map = displacement.trilinos_vector().Map();
@@ -169,25 +240,50 @@ namespace rupture
       const bool contiguous = owned.is_contiguous() && owned.n_elements() > 0 &&
                               lid(end_owned - 1) - lid(first_owned) ==
                                 static_cast<int>(owned.n_elements()) - 1;
-      const int  first_lid = contiguous ? lid(first_owned) : 0;
-      const auto local     = [&](const types::global_dof_index i) {
-        return (contiguous && i >= first_owned && i < end_owned) ?
-                     first_lid + static_cast<int>(i - first_owned) :
-                     lid(i);
-      };
-      // The point of each local DoF in the current piece, or -1.
-      std::vector<int> point_of(map.NumMyElements(), -1);
+      const int first_lid = contiguous ? lid(first_owned) : 0;
+      const std::function<int(types::global_dof_index)> local =
+        [&](const types::global_dof_index i) {
+          return (contiguous && i >= first_owned && i < end_owned) ?
+                   first_lid + static_cast<int>(i - first_owned) :
+                   lid(i);
+        };
 
-      const auto        &tria = dof_handler.get_triangulation();
+      if (pieces.empty() || pieces_dof_handler != &dof_handler ||
+          pieces_n_dofs != dof_handler.n_dofs() ||
+          pieces_n_local != map.NumMyElements())
+        build_pieces(dof_handler, local, map.NumMyElements());
+
+      // For the stress: the gradients at the centre of the reference cell
+      // of each element's shape functions and of the vertices' (Q1
+      // geometry) shape functions. A Q1 element's DoFs are the points'.
+      Point<dim> centre;
+      for (unsigned int d = 0; d < dim; ++d)
+        centre[d] = 0.5;
+      std::array<Tensor<1, dim>, n_vertices> vertex_gradient;
+      for (unsigned int v = 0; v < n_vertices; ++v)
+        vertex_gradient[v] =
+          GeometryInfo<dim>::d_linear_shape_function_gradient(centre, v);
+      const auto                    &fes = dof_handler.get_fe_collection();
+      std::vector<ElementTable<dim>> tables(fes.size());
+      bool                           all_q1 = true;
+      for (unsigned int f = 0; f < fes.size(); ++f)
+        {
+          const FiniteElement<dim> &fe = fes[f];
+          all_q1                       = all_q1 && (fe.n_dofs_per_cell() == 0 ||
+                              fe.n_dofs_per_cell() == n_vertices * dim);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              tables[f].component.push_back(
+                fe.system_to_component_index(i).first % dim);
+              tables[f].gradient.push_back(fe.shape_grad(i, centre));
+            }
+        }
+      const std::array<unsigned int, 8> vtk_order = {{0, 1, 3, 2, 4, 5, 7, 6}};
+
       const unsigned int my_rank =
         dealii::Utilities::MPI::this_mpi_process(communicator);
-      unsigned int n_owned = 0;
-      for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned())
-          ++n_owned;
-      const unsigned int n_pieces =
-        std::max(1u, (n_owned + cells_per_piece - 1) / cells_per_piece);
-      unsigned int pieces_so_far = 0;
+      const unsigned int n_pieces      = pieces.size();
+      unsigned int       pieces_so_far = 0;
       MPI_Scan(
         &n_pieces, &pieces_so_far, 1, MPI_UNSIGNED, MPI_SUM, communicator);
       const unsigned int first_piece = pieces_so_far - n_pieces;
@@ -201,138 +297,112 @@ namespace rupture
         return "solution_" + step_name + "." + std::to_string(piece) + ".vtu";
       };
 
-      // Each rank writes its cells in pieces of at most cells_per_piece
-      // cells, so that the memory of a snapshot stays bounded. Points are
-      // shared by the cells of a piece: one point per vertex and side of
-      // the fault (the key is the vertex's first DoF). The stress is a cell
-      // field, at the centre of each cell.
-      PieceArrays  a;
-      unsigned int piece = 0;
-      const auto   flush = [&]() {
-        const std::uint64_t n_points       = a.points.size() / 3;
-        const std::uint64_t n_cells        = a.types.size();
-        const bool          deflate_fields = (compression == Compression::all);
-        VtuFile             file(
-          n_points, n_cells, time, step, compression != Compression::none);
-        file.add(VtuFile::Section::points, "Points", 3, a.points);
-        file.add(VtuFile::Section::cells, "connectivity", 1, a.connectivity);
-        file.add(VtuFile::Section::cells, "offsets", 1, a.offsets);
-        file.add(VtuFile::Section::cells, "types", 1, a.types);
-        if (with_displacement)
-          file.add(VtuFile::Section::point_data,
-                   "displacement",
-                   3,
-                   a.displacement,
-                   deflate_fields);
-        if (with_velocity)
-          file.add(VtuFile::Section::point_data,
-                   "velocity",
-                   3,
-                   a.velocity,
-                   deflate_fields);
-        if (with_stress)
-          file.add(
-            VtuFile::Section::cell_data, "stress", 9, a.stress, deflate_fields);
-        if (with_material_id)
-          file.add(VtuFile::Section::cell_data,
-                   "material_id",
-                   1,
-                   a.material_id);
-        if (with_rank)
-          file.add(VtuFile::Section::cell_data, "mpi_rank", 1, a.rank);
-        directory.write("solution/" + piece_name(first_piece + piece),
-                        file.str());
-        if (my_rank == 0 && piece == 0)
-          {
-            std::vector<std::string> names;
-            for (unsigned int i = 0; i < n_all_pieces; ++i)
-              names.push_back(piece_name(i));
-            directory.write("solution/" + pvtu, file.pvtu_record(names));
-          }
-        for (const int i : a.touched)
-          point_of[i] = -1;
-        a.clear();
-        ++piece;
-      };
-
-      // deal.II's lexicographic vertex order to VTK's.
-      const std::array<unsigned int, 8> vtk_order = {{0, 1, 3, 2, 4, 5, 7, 6}};
+      const bool          compress       = (compression != Compression::none);
+      const bool          deflate_fields = (compression == Compression::all);
+      std::vector<double> point_u;
+      std::vector<float>  values;
       std::vector<types::global_dof_index> dofs;
-      std::vector<int>                     lids;
-      unsigned int                         n_in_piece = 0;
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const unsigned int       f     = cell->active_fe_index();
-            const ElementTable<dim> &table = tables[f];
-            dofs.resize(table.component.size());
-            cell->get_dof_indices(dofs);
-            lids.resize(dofs.size());
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              lids[i] = local(dofs[i]);
+      for (unsigned int i = 0; i < n_pieces; ++i)
+        {
+          const Piece       &p        = pieces[i];
+          const unsigned int n_points = p.point_dofs.size();
+          VtuFile file(n_points, p.cells.size(), time, step, compress);
+          for (const auto &array : p.mesh)
+            file.add(array);
 
-            for (unsigned int k = 0; k < n_vertices; ++k)
-              {
-                const unsigned int v   = vtk_order[k];
-                const int          key = lids[table.vertex_dof[v][0]];
-                if (point_of[key] < 0)
-                  {
-                    point_of[key] = a.points.size() / 3;
-                    a.touched.push_back(key);
-                    const Point<dim> &x = cell->vertex(v);
-                    for (unsigned int d = 0; d < 3; ++d)
+          // The displacement at the points, also the Q1 stress's input.
+          point_u.assign(n_points * dim, 0.);
+          for (unsigned int n = 0; n < n_points; ++n)
+            for (unsigned int d = 0; d < dim; ++d)
+              point_u[n * dim + d] = u_values[p.point_dofs[n][d]];
+          const auto point_field =
+            [&](const auto get) -> const std::vector<float> & {
+            values.assign(3 * n_points, 0.f);
+            for (unsigned int n = 0; n < n_points; ++n)
+              for (unsigned int d = 0; d < dim; ++d)
+                values[3 * n + d] = get(n, d);
+            return values;
+          };
+          if (with_displacement)
+            file.add(VtuFile::Section::point_data,
+                     "displacement",
+                     3,
+                     point_field(
+                       [&](const unsigned int n, const unsigned int d) {
+                         return point_u[n * dim + d];
+                       }),
+                     deflate_fields);
+          if (with_velocity)
+            file.add(VtuFile::Section::point_data,
+                     "velocity",
+                     3,
+                     point_field(
+                       [&](const unsigned int n, const unsigned int d) {
+                         return v_values[p.point_dofs[n][d]];
+                       }),
+                     deflate_fields);
+
+          if (with_stress)
+            {
+              values.assign(9 * p.cells.size(), 0.f);
+              for (unsigned int c = 0; c < p.cells.size(); ++c)
+                {
+                  const auto    &cell = p.cells[c];
+                  Tensor<2, dim> jacobian, reference_gradient;
+                  for (unsigned int v = 0; v < n_vertices; ++v)
+                    jacobian += outer_product(Tensor<1, dim>(cell->vertex(v)),
+                                              vertex_gradient[v]);
+                  if (all_q1)
+                    for (unsigned int k = 0; k < n_vertices; ++k)
                       {
-                        a.points.push_back(d < dim ? x[d] : 0.);
-                        const int l =
-                          d < dim ? lids[table.vertex_dof[v][d]] : -1;
-                        if (with_displacement)
-                          a.displacement.push_back(l < 0 ? 0. : u_values[l]);
-                        if (with_velocity)
-                          a.velocity.push_back(l < 0 ? 0. : v_values[l]);
+                        const unsigned int n =
+                          p.connectivity[c * n_vertices + k];
+                        for (unsigned int d = 0; d < dim; ++d)
+                          reference_gradient[d] +=
+                            point_u[n * dim + d] *
+                            vertex_gradient[vtk_order[k]];
                       }
-                  }
-                a.connectivity.push_back(point_of[key]);
-              }
-            a.offsets.push_back(a.connectivity.size());
-            a.types.push_back(dim == 3 ? 12 : 9);
+                  else
+                    {
+                      const ElementTable<dim> &table =
+                        tables[cell->active_fe_index()];
+                      dofs.resize(table.component.size());
+                      cell->get_dof_indices(dofs);
+                      for (unsigned int j = 0; j < dofs.size(); ++j)
+                        reference_gradient[table.component[j]] +=
+                          u_values[local(dofs[j])] * table.gradient[j];
+                    }
+                  const Tensor<2, dim> gradient =
+                    reference_gradient * invert(jacobian);
+                  const auto          &m = materials.get(cell->material_id());
+                  const Tensor<2, dim> strain =
+                    0.5 * (gradient + transpose(gradient));
+                  const Tensor<2, dim> stress =
+                    m.lambda * trace(strain) * unit_symmetric_tensor<dim>() +
+                    2 * m.mu * strain;
+                  for (unsigned int a = 0; a < dim; ++a)
+                    for (unsigned int b = 0; b < dim; ++b)
+                      values[9 * c + 3 * a + b] = stress[a][b];
+                }
+              file.add(VtuFile::Section::cell_data,
+                       "stress",
+                       9,
+                       values,
+                       deflate_fields);
+            }
+          for (const auto &array : p.cell_fields)
+            file.add(array);
 
-            if (with_stress)
-              {
-                Tensor<2, dim> jacobian, reference_gradient;
-                for (unsigned int v = 0; v < n_vertices; ++v)
-                  jacobian += outer_product(Tensor<1, dim>(cell->vertex(v)),
-                                            vertex_gradient[v]);
-                for (unsigned int i = 0; i < dofs.size(); ++i)
-                  reference_gradient[table.component[i]] +=
-                    u_values[lids[i]] * table.gradient[i];
-                const Tensor<2, dim> gradient =
-                  reference_gradient * invert(jacobian);
-                const auto          &m = materials.get(cell->material_id());
-                const Tensor<2, dim> strain =
-                  0.5 * (gradient + transpose(gradient));
-                const Tensor<2, dim> stress =
-                  m.lambda * trace(strain) * unit_symmetric_tensor<dim>() +
-                  2 * m.mu * strain;
-                for (unsigned int i = 0; i < 3; ++i)
-                  for (unsigned int j = 0; j < 3; ++j)
-                    a.stress.push_back(i < dim && j < dim ? stress[i][j] : 0.);
-              }
-            if (with_material_id)
-              a.material_id.push_back(cell->material_id());
-            if (with_rank)
-              a.rank.push_back(my_rank);
-
-            if (++n_in_piece == cells_per_piece)
-              {
-                flush();
-                n_in_piece = 0;
-              }
-          }
-      // The last, partial piece, or the empty piece of a rank without
-      // cells.
-      if (n_in_piece > 0 || piece == 0)
-        flush();
-      AssertThrow(piece == n_pieces, ExcInternalError());
+          directory.write("solution/" + piece_name(first_piece + i),
+                          file.str());
+          if (my_rank == 0 && i == 0)
+            {
+              std::vector<std::string> names;
+              for (unsigned int k = 0; k < n_all_pieces; ++k)
+                names.push_back(piece_name(k));
+              directory.write("solution/" + pvtu, file.pvtu_record(names));
+            }
+        }
       records.emplace_back(time, "solution/" + pvtu);
 
       if (my_rank == 0)

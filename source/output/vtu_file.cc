@@ -47,61 +47,61 @@ namespace rupture
 
 
 
-    void
+    const VtuFile::Array &
     VtuFile::add(const Section             section,
                  const std::string        &name,
                  const unsigned int        n_components,
                  const std::vector<float> &values,
                  const bool                deflate)
     {
-      add_bytes(section,
-                name,
-                "Float32",
-                n_components,
-                values.data(),
-                values.size() * sizeof(float),
-                deflate);
+      return add_bytes(section,
+                       name,
+                       "Float32",
+                       n_components,
+                       values.data(),
+                       values.size() * sizeof(float),
+                       deflate);
     }
 
 
 
-    void
+    const VtuFile::Array &
     VtuFile::add(const Section                    section,
                  const std::string               &name,
                  const unsigned int               n_components,
                  const std::vector<std::int32_t> &values,
                  const bool                       deflate)
     {
-      add_bytes(section,
-                name,
-                "Int32",
-                n_components,
-                values.data(),
-                values.size() * sizeof(std::int32_t),
-                deflate);
+      return add_bytes(section,
+                       name,
+                       "Int32",
+                       n_components,
+                       values.data(),
+                       values.size() * sizeof(std::int32_t),
+                       deflate);
     }
 
 
 
-    void
+    const VtuFile::Array &
     VtuFile::add(const Section                    section,
                  const std::string               &name,
                  const unsigned int               n_components,
                  const std::vector<std::uint8_t> &values,
                  const bool                       deflate)
     {
-      add_bytes(section,
-                name,
-                "UInt8",
-                n_components,
-                values.data(),
-                values.size(),
-                deflate);
+      return add_bytes(section,
+                       name,
+                       "UInt8",
+                       n_components,
+                       values.data(),
+                       values.size(),
+                       deflate);
     }
 
 
 
-    void
+    const VtuFile::Array &
     VtuFile::add_bytes(const Section      section,
                        const std::string &name,
                        const std::string &type,
@@ -110,7 +110,7 @@ namespace rupture
                        const std::size_t  n_bytes,
                        const bool         deflate)
     {
-      Array array{section, name, type, n_components, {}};
+      Array array{section, name, type, n_components, compress, {}};
       if (!compress)
         {
           // The size in bytes, then the bytes.
@@ -120,7 +120,7 @@ namespace rupture
           if (n_bytes > 0)
             std::memcpy(array.bytes.data() + sizeof(size), data, n_bytes);
           arrays.push_back(std::move(array));
-          return;
+          return arrays.back();
         }
       // VTK's compressed layout: a header of 64-bit words (the number of
       // blocks, the uncompressed size of a block and of the last block, the
@@ -155,6 +155,16 @@ namespace rupture
                     body.data(),
                     body.size());
       arrays.push_back(std::move(array));
+      return arrays.back();
+    }
+
+
+
+    void
+    VtuFile::add(const Array &array)
+    {
+      AssertThrow(array.compressed == compress, ExcInternalError());
+      arrays.push_back(array);
     }
 
 

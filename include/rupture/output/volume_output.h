@@ -3,12 +3,16 @@
 
 #include <rupture/material/elastic_material.h>
 #include <rupture/output/directory.h>
+#include <rupture/output/vtu_file.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <boost/signals2/connection.hpp>
+
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +33,12 @@ namespace rupture
      * The DoFHandler may carry the displacement on one or two sides (a split
      * fault): components i and i + dim are then the same physical component
      * on either side, and only one of them is nonzero on any cell.
+     *
+     * What does not change from one snapshot to the next is built at the
+     * first one and kept: each piece's cells, points and the local indices
+     * of their DoFs, and the encoded mesh and integer cell fields. It is
+     * built anew when the triangulation changes or the DoFs or the ghosted
+     * vectors' layout differ.
      */
     template <int dim>
     class VolumeOutput
@@ -59,6 +69,8 @@ namespace rupture
                    const unsigned int                cells_per_piece,
                    const MPI_Comm                    communicator);
 
+      ~VolumeOutput();
+
       /**
        * The names of the fields that can be written.
        */
@@ -77,6 +89,29 @@ namespace rupture
             const unsigned int                   step);
 
     private:
+      /**
+       * What a piece keeps between snapshots.
+       */
+      struct Piece
+      {
+        std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
+        /// Each cell's points, in VTK's vertex order.
+        std::vector<std::int32_t> connectivity;
+        /// The local (ghosted) index of each point's dim components.
+        std::vector<std::array<int, dim>> point_dofs;
+        /// Points, connectivity, offsets and types, encoded.
+        std::vector<VtuFile::Array> mesh;
+        /// The material ids and MPI ranks (as chosen), encoded.
+        std::vector<VtuFile::Array> cell_fields;
+      };
+
+      /// Build the pieces for @p dof_handler; @p local gives the local
+      /// (ghosted) index of a DoF, of which there are @p n_local.
+      void
+      build_pieces(const DoFHandler<dim> &dof_handler,
+                   const std::function<int(types::global_dof_index)> &local,
+                   const int                                          n_local);
+
       Directory                                  &directory;
       const Material::ElasticMaterials           &materials;
       const Compression                           compression;
@@ -85,6 +120,13 @@ namespace rupture
       std::vector<std::pair<double, std::string>> records;
       /// Whether each of available_fields() is written.
       std::array<bool, 5> write_field{};
+
+      std::vector<Piece>      pieces;
+      const DoFHandler<dim>  *pieces_dof_handler = nullptr;
+      types::global_dof_index pieces_n_dofs      = 0;
+      int                     pieces_n_local     = 0;
+      /// Clears the pieces when the triangulation changes.
+      boost::signals2::connection tria_listener;
     };
   } // namespace Output
 } // namespace rupture

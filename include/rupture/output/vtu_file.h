@@ -35,6 +35,20 @@ namespace rupture
       };
 
       /**
+       * An array as it is written: its name and type and its bytes, with
+       * the header and the (compressed) data.
+       */
+      struct Array
+      {
+        Section           section;
+        std::string       name;
+        std::string       type;
+        unsigned int      n_components;
+        bool              compressed;
+        std::vector<char> bytes;
+      };
+
+      /**
        * A piece with @p n_points points and @p n_cells cells, at simulated
        * time @p time and output number @p cycle (ParaView's TIME and CYCLE
        * field data), compressed or not.
@@ -51,26 +65,34 @@ namespace rupture
        * compressed file, @p deflate = false stores the array in zlib's
        * format without compressing it: worth it for the floating-point
        * fields of a solution, which zlib shrinks by only 20-30 % at several
-       * times the cost of the rest of the file.
+       * times the cost of the rest of the file. Returns the array as it
+       * will be written, which a later file with the same mesh may add()
+       * again without encoding it anew.
        */
-      void
+      const Array &
       add(const Section             section,
           const std::string        &name,
           const unsigned int        n_components,
           const std::vector<float> &values,
           const bool                deflate = true);
-      void
+      const Array &
       add(const Section                    section,
           const std::string               &name,
           const unsigned int               n_components,
           const std::vector<std::int32_t> &values,
           const bool                       deflate = true);
-      void
+      const Array &
       add(const Section                    section,
           const std::string               &name,
           const unsigned int               n_components,
           const std::vector<std::uint8_t> &values,
           const bool                       deflate = true);
+
+      /**
+       * Add an array encoded for an earlier file (of the same compression).
+       */
+      void
+      add(const Array &array);
 
       /**
        * The whole file.
@@ -86,17 +108,7 @@ namespace rupture
       pvtu_record(const std::vector<std::string> &piece_names) const;
 
     private:
-      struct Array
-      {
-        Section      section;
-        std::string  name;
-        std::string  type;
-        unsigned int n_components;
-        /// The bytes to write: the header and the (compressed) data.
-        std::vector<char> bytes;
-      };
-
-      void
+      const Array &
       add_bytes(const Section      section,
                 const std::string &name,
                 const std::string &type,
