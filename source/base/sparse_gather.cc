@@ -2,6 +2,8 @@
 
 #include <deal.II/base/array_view.h>
 
+#include <algorithm>
+
 namespace rupture
 {
   void
@@ -24,6 +26,24 @@ namespace rupture
       source[k] = partitioner->global_to_local(indices[k]);
     ghosts.assign(partitioner->n_ghost_indices(), 0.);
     buffer.assign(partitioner->n_import_indices(), 0.);
+  }
+
+
+
+  std::vector<unsigned int>
+  SparseGather::owned_entries() const
+  {
+    std::vector<unsigned int> entries;
+    for (const unsigned int k : source)
+      if (k < n_owned)
+        entries.push_back(k);
+    if (partitioner)
+      for (const auto &range : partitioner->import_indices())
+        for (unsigned int k = range.first; k < range.second; ++k)
+          entries.push_back(k);
+    std::sort(entries.begin(), entries.end());
+    entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+    return entries;
   }
 
 

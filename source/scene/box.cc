@@ -415,6 +415,18 @@ namespace rupture
       return box_boundary_names<dim>();
     }
 
+    template <int dim>
+    double
+    Box<dim>::n_coarse_cells() const
+    {
+      double n = 1;
+      for (const unsigned int c : n_cells)
+        n *= c;
+      return n;
+    }
+
+
+
     RUPTURE_REGISTER_SCENE(
       Box,
       "box",

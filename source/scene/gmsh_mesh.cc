@@ -1,18 +1,156 @@
 #include <rupture/scene/gmsh_mesh.h>
 
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/tria.h>
 
+#include <array>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace rupture
 {
   namespace Scene
   {
+    namespace
+    {
+      /**
+       * Refuse cells of the mesh file (quadrilaterals in 2-D, hexahedra in
+       * 3-D) that name a node twice or two nodes at one place: deal.II's
+       * reader cannot build such a cell (it aborts or makes one of zero
+       * size).
+       */
+      template <int dim>
+      void
+      check_cell_nodes(const std::string &file_name, const std::string &version)
+      {
+        const int                             cell_type  = (dim == 2) ? 3 : 5;
+        const unsigned int                    n_vertices = (dim == 2) ? 4 : 8;
+        std::ifstream                         in(file_name);
+        std::map<long, std::array<double, 3>> nodes;
+        std::string                           line;
+        const auto fail = [&](const long cell, const std::string &what) {
+          AssertThrow(false,
+                      ExcMessage("The mesh file <" + file_name +
+                                 "> has a degenerate cell: element " +
+                                 std::to_string(cell) + " " + what +
+                                 ". Allowed: " +
+                                 (dim == 2 ? std::string("quadrilaterals") :
+                                             std::string("hexahedra")) +
+                                 " with " + std::to_string(n_vertices) +
+                                 " distinct nodes at distinct places."));
+        };
+        const auto check = [&](const long cell, const std::vector<long> &v) {
+          for (unsigned int i = 0; i < v.size(); ++i)
+            for (unsigned int j = i + 1; j < v.size(); ++j)
+              {
+                if (v[i] == v[j])
+                  fail(cell, "names node " + std::to_string(v[i]) + " twice");
+                const auto a = nodes.find(v[i]), b = nodes.find(v[j]);
+                if (a != nodes.end() && b != nodes.end() &&
+                    a->second == b->second)
+                  fail(cell,
+                       "has its nodes " + std::to_string(v[i]) + " and " +
+                         std::to_string(v[j]) + " at the same place");
+              }
+        };
+        while (std::getline(in, line))
+          {
+            line = dealii::Utilities::trim(line);
+            if (line == "$Nodes")
+              {
+                if (version == "2.2")
+                  {
+                    long n = 0;
+                    in >> n;
+                    for (long i = 0; i < n && in; ++i)
+                      {
+                        long                  tag;
+                        std::array<double, 3> x;
+                        in >> tag >> x[0] >> x[1] >> x[2];
+                        nodes[tag] = x;
+                      }
+                  }
+                else
+                  {
+                    long blocks = 0, n = 0, min = 0, max = 0;
+                    in >> blocks >> n >> min >> max;
+                    for (long b = 0; b < blocks && in; ++b)
+                      {
+                        long entity_dim, entity, parametric, count;
+                        in >> entity_dim >> entity >> parametric >> count;
+                        std::vector<long> tags(count);
+                        for (auto &t : tags)
+                          in >> t;
+                        for (const long t : tags)
+                          {
+                            std::array<double, 3> x;
+                            in >> x[0] >> x[1] >> x[2];
+                            nodes[t] = x;
+                          }
+                      }
+                  }
+              }
+            else if (line == "$Elements")
+              {
+                std::vector<long> v;
+                if (version == "2.2")
+                  {
+                    long n = 0;
+                    in >> n;
+                    std::getline(in, line);
+                    for (long i = 0; i < n && std::getline(in, line); ++i)
+                      {
+                        std::istringstream words(line);
+                        long               number, type, n_tags, tag;
+                        words >> number >> type >> n_tags;
+                        for (long t = 0; t < n_tags; ++t)
+                          words >> tag;
+                        if (type != cell_type)
+                          continue;
+                        v.assign(n_vertices, 0);
+                        for (auto &node : v)
+                          words >> node;
+                        check(number, v);
+                      }
+                  }
+                else
+                  {
+                    long blocks = 0, n = 0, min = 0, max = 0;
+                    in >> blocks >> n >> min >> max;
+                    for (long b = 0; b < blocks && in; ++b)
+                      {
+                        long entity_dim, entity, type, count;
+                        in >> entity_dim >> entity >> type >> count;
+                        std::getline(in, line);
+                        for (long i = 0; i < count && std::getline(in, line);
+                             ++i)
+                          if (type == cell_type)
+                            {
+                              std::istringstream words(line);
+                              long               number;
+                              words >> number;
+                              v.assign(n_vertices, 0);
+                              for (auto &node : v)
+                                words >> node;
+                              check(number, v);
+                            }
+                      }
+                  }
+                return;
+              }
+          }
+      }
+    } // namespace
+
+
+
     template <int dim>
     void
     GmshMesh<dim>::declare_parameters(ParameterHandler &prm)
@@ -166,6 +304,15 @@ namespace rupture
       Triangulation<dim> serial;
       GridIn<dim>        grid_in;
       grid_in.attach_triangulation(serial);
+      {
+        std::ifstream head(file_name);
+        std::string   line, version;
+        while (std::getline(head, line) &&
+               dealii::Utilities::trim(line) != "$MeshFormat")
+          ;
+        head >> version;
+        check_cell_nodes<dim>(file_name, version);
+      }
       std::ifstream in(file_name);
       try
         {
@@ -190,6 +337,44 @@ namespace rupture
                              "> contains cells that are not hexahedra "
                              "(quadrilaterals in 2-D); only those are "
                              "allowed."));
+      // Every cell must map the unit cell one to one: a positive Jacobian
+      // determinant at each of its corners (repeated nodes make it zero, a
+      // twisted 'bow-tie' cell negative at some corners). Such a cell would
+      // give infinite or NaN stresses only once the run has started.
+      unsigned int number = 0;
+      for (const auto &cell : serial.active_cell_iterators())
+        {
+          ++number;
+          const double size = std::pow(cell->diameter(), dim);
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const Point<dim> corner = GeometryInfo<dim>::unit_cell_vertex(v);
+              Tensor<2, dim>   jacobian;
+              for (const unsigned int w : cell->vertex_indices())
+                jacobian += outer_product(
+                  Tensor<1, dim>(cell->vertex(w)),
+                  GeometryInfo<dim>::d_linear_shape_function_gradient(corner,
+                                                                      w));
+              const double det = determinant(jacobian);
+              if (!(det > 1e-12 * size))
+                {
+                  std::ostringstream message;
+                  message << "The mesh file <" << file_name
+                          << "> has a degenerate or twisted cell: cell "
+                          << number << " (physical tag "
+                          << int(cell->material_id()) << ", centre "
+                          << cell->center()
+                          << ") has a Jacobian determinant of " << det
+                          << " at its node " << cell->vertex(v)
+                          << " (nodes repeated, crossing edges or a wrong "
+                             "node order). Allowed: cells whose corners all "
+                             "turn the same way, with a positive Jacobian "
+                             "at each of them.";
+                  AssertThrow(false, ExcMessage(message.str()));
+                }
+            }
+        }
+
       // Physical tags of cells, in ascending order, become material ids
       // 0, 1, 2, ...: the order of the lists in the Material section.
       std::set<types::material_id> tags;

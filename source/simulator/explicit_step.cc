@@ -30,6 +30,11 @@ namespace rupture
         ++k;
       }
     explicit_inverse_diagonal.compress(VectorOperation::insert);
+    // The split-node force is zero away from the fault's entries, and the
+    // step touches only those.
+    fault_entries.clear();
+    if (fault)
+      fault_entries = fault->split_node_entries();
   }
 
 
@@ -48,13 +53,13 @@ namespace rupture
     const auto local = [](const VectorType &v) -> double * {
       return const_cast<double *>(v.trilinos_vector()[0]);
     };
-    double *const
-             u = local(displacement),
-      *const v = local(velocity), *const a = local(acceleration),
-      *const u0 = local(old_displacement), *const ku = local(stiffness_force),
-      *const r = local(step_residual), *const ff = local(fault_force);
-    const double *const m = local(lumped_mass);
-    const double *const c_abs =
+    double *const u = local(displacement), *const v = local(velocity),
+                  *const a  = local(acceleration),
+                  *const u0 = local(old_displacement),
+                  *const r  = local(step_residual),
+                  *const ff = local(fault_force);
+    const double *const  m  = local(lumped_mass);
+    const double *const  c_abs =
       has_absorbing ? local(absorbing_damping) : nullptr;
     const double *const f     = local(load);
     const double *const inv_d = local(explicit_inverse_diagonal);
@@ -77,23 +82,37 @@ namespace rupture
     // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
     //   - alpha M v~ - C_abs v~ - F_fault; the stiffness damping uses the
     //   predictor.
-    if (rayleigh_beta == 0)
-      apply_stiffness(displacement, stiffness_force);
-    else
+    // Without stiffness damping K u is read where the matrix-free operator
+    // left it (no copy).
+    const double *ku =
+      (rayleigh_beta == 0) ? apply_stiffness_in_place(displacement) : nullptr;
+    if (!ku)
       {
-        step_residual = displacement;
-        step_residual.add(rayleigh_beta, velocity);
-        apply_stiffness(step_residual, stiffness_force);
+        if (rayleigh_beta == 0)
+          apply_stiffness(displacement, stiffness_force);
+        else
+          {
+            step_residual = displacement;
+            step_residual.add(rayleigh_beta, velocity);
+            apply_stiffness(step_residual, stiffness_force);
+          }
+        ku = local(stiffness_force);
       }
     for (unsigned int i = 0; i < n; ++i)
       r[i] = f[i] - ku[i] - rayleigh_alpha * m[i] * v[i] -
              (c_abs ? c_abs[i] * v[i] : 0.);
-    fault_force = 0;
+    // The fault's force, nonzero only at its entries: r - F_fault there.
     if (fault)
-      assemble_split_node_force(velocity, step_residual, false, fault_force);
+      {
+        for (const unsigned int i : fault_entries)
+          ff[i] = 0;
+        assemble_split_node_force(velocity, step_residual, false, fault_force);
+        for (const unsigned int i : fault_entries)
+          r[i] -= ff[i];
+      }
     for (unsigned int i = 0; i < n; ++i)
       {
-        a[i] = (r[i] - ff[i]) * inv_d[i];
+        a[i] = r[i] * inv_d[i];
         v[i] += gamma * dt * a[i];
       }
     distribute_hanging(acceleration);
@@ -106,6 +125,7 @@ namespace rupture
       {
         apply_stiffness(velocity, step_residual);
         apply_stiffness(displacement, stiffness_force);
+        ku = local(stiffness_force);
       }
     const double *const kv      = (rayleigh_beta != 0) ? r : nullptr;
     double *const       applied = local(applied_force);
@@ -113,7 +133,8 @@ namespace rupture
     double *const absorbing = has_absorbing ? local(absorbing_force) : nullptr;
     double *const contact   = local(contact_force);
     // work of the loads, damping, absorbing boundaries, fault; strain and
-    // kinetic energy
+    // kinetic energy (the fault's work at its entries only, where its
+    // force is nonzero, in the same order)
     double sums[6] = {0, 0, 0, 0, 0, 0};
     for (unsigned int i = 0; i < n; ++i)
       {
@@ -137,11 +158,15 @@ namespace rupture
             sums[2] += (fa + absorbing[i]) * increment;
             absorbing[i] = fa;
           }
-        sums[3] += (ff[i] + contact[i]) * increment;
-        contact[i] = ff[i];
         sums[4] += u[i] * ku[i];
         sums[5] += m[i] * v[i] * v[i];
       }
+    for (const unsigned int i : fault_entries)
+      if (dof_kind[i] != DofKind::tied)
+        {
+          sums[3] += (ff[i] + contact[i]) * (u[i] - u0[i]);
+          contact[i] = ff[i];
+        }
     dealii::Utilities::MPI::sum(ArrayView<const double>(sums, 6),
                                 communicator,
                                 ArrayView<double>(sums, 6));

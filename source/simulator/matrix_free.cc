@@ -123,6 +123,23 @@ namespace rupture
 
 
   template <int dim>
+  const double *
+  Simulator<dim>::apply_stiffness_in_place(const VectorType &x) const
+  {
+    if (!stiffness_matrix_free)
+      return nullptr;
+    TimerOutput::Scope t(timer, "Stiffness product matrix-free");
+    const unsigned int n_owned = operator_src.locally_owned_size();
+    AssertDimension(static_cast<unsigned int>(x.locally_owned_size()), n_owned);
+    const double *xs = x.trilinos_vector()[0];
+    std::copy(xs, xs + n_owned, operator_src.begin());
+    elastic_operator->vmult(operator_dst, operator_src, 1, 0);
+    return operator_dst.begin();
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::apply_elastic(const VectorType &x,
                                 VectorType       &y,

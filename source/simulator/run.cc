@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <vector>
 
 namespace rupture
 {
@@ -37,6 +38,101 @@ namespace rupture
       "                             override one entry of file.prm; may be\n"
       "                             repeated, e.g. for parameter sweeps:\n"
       "                             --set \"Time integration/End time=2\"\n";
+
+
+
+    /**
+     * Follow the 'include' lines of a .prm file (deal.II parses an
+     * included file by recursion, relative to the working directory, so a
+     * file that includes itself, directly or through others, would never
+     * end) and refuse a cycle or a chain deeper than 32 files.
+     */
+    void
+    check_includes(const std::string &file, std::vector<std::string> &chain)
+    {
+      namespace fs = std::filesystem;
+      std::error_code   error;
+      const std::string key = fs::weakly_canonical(file, error).string();
+      const auto        at  = std::find(chain.begin(), chain.end(), key);
+      if (at != chain.end() || chain.size() >= 32)
+        {
+          std::string path;
+          for (auto c = (at != chain.end() ? at : chain.begin());
+               c != chain.end();
+               ++c)
+            path += "<" + fs::path(*c).filename().string() + "> includes ";
+          path += "<" + fs::path(key).filename().string() + ">";
+          AssertThrow(false,
+                      ExcMessage(
+                        at != chain.end() ?
+                          "The parameter files include each other in a "
+                          "cycle: " +
+                            path +
+                            ". Remove the 'include' line that closes it." :
+                          "The parameter file <" + chain.front() +
+                            "> includes files more than 32 deep. Allowed: "
+                            "a chain of at most 32 included files."));
+        }
+      std::ifstream in(file);
+      if (!in)
+        return; // ParameterHandler reports a missing file itself.
+      chain.push_back(key);
+      std::string line;
+      while (std::getline(in, line))
+        {
+          const std::string code =
+            dealii::Utilities::trim(line.substr(0, line.find('#')));
+          if (code.rfind("include ", 0) == 0 || code.rfind("INCLUDE ", 0) == 0)
+            check_includes(dealii::Utilities::trim(code.substr(8)), chain);
+        }
+      chain.pop_back();
+    }
+
+
+
+    /**
+     * Refuse a .json parameter file whose objects and arrays nest deeper
+     * than any parameter file can (the JSON reader would recurse until the
+     * stack overflows).
+     */
+    void
+    check_json_depth(const std::string &file)
+    {
+      std::ifstream      in(file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      const std::string s       = text.str();
+      unsigned int      depth   = 0;
+      bool              quoted  = false;
+      const unsigned    allowed = 64;
+      for (std::size_t i = 0; i < s.size(); ++i)
+        {
+          const char c = s[i];
+          if (quoted)
+            {
+              if (c == '\\')
+                ++i;
+              else if (c == '"')
+                quoted = false;
+            }
+          else if (c == '"')
+            quoted = true;
+          else if (c == '{' || c == '[')
+            {
+              AssertThrow(++depth <= allowed,
+                          ExcMessage(
+                            "The parameter file <" + file +
+                            "> nests its objects and arrays more "
+                            "than " +
+                            std::to_string(allowed) +
+                            " deep. Allowed: JSON objects nested as "
+                            "deep as the subsections of 'rupture "
+                            "--print-parameters prm' (a few levels)."));
+            }
+          else if ((c == '}' || c == ']') && depth > 0)
+            --depth;
+        }
+    }
 
     /**
      * Parameter names are stored mangled in the property tree.
@@ -276,6 +372,14 @@ namespace rupture
                                  "'rupture --print-parameters prm' prints a "
                                  "complete file to start from."));
         }
+        if (parameter_file.size() >= 5 &&
+            parameter_file.compare(parameter_file.size() - 5, 5, ".json") == 0)
+          check_json_depth(parameter_file);
+        else
+          {
+            std::vector<std::string> chain;
+            check_includes(parameter_file, chain);
+          }
         try
           {
             prm.parse_input(parameter_file, "", false, true);

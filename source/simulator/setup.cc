@@ -23,12 +23,88 @@
 
 namespace rupture
 {
+  namespace
+  {
+    /**
+     * The memory of the nodes this run has (the sum of MemTotal over the
+     * nodes), or 0 if unknown.
+     */
+    double
+    memory_of_nodes(const MPI_Comm communicator, unsigned int &n_nodes)
+    {
+      MPI_Comm node;
+      MPI_Comm_split_type(
+        communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+      const bool first = dealii::Utilities::MPI::this_mpi_process(node) == 0;
+      MPI_Comm_free(&node);
+      double mine = 0;
+      if (first)
+        {
+          std::ifstream in("/proc/meminfo");
+          std::string   key;
+          double        kilobytes = 0;
+          while (in >> key >> kilobytes)
+            {
+              if (key == "MemTotal:")
+                {
+                  mine = kilobytes * 1024;
+                  break;
+                }
+              in.ignore(256, '\n');
+            }
+        }
+      n_nodes = dealii::Utilities::MPI::sum(first ? 1u : 0u, communicator);
+      return dealii::Utilities::MPI::sum(mine, communicator);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_mesh_size(const double       n_coarse,
+                                  const std::string &source) const
+  {
+    // A lower bound of what a cell costs with everything the run builds on
+    // it (about 1.6 kB for Q1 and 6.5 kB for Q2 hexahedra, measured): a
+    // mesh that needs more than the nodes have cannot be set up.
+    const double bytes_per_cell = 1000;
+    const double n_cells =
+      n_coarse * std::pow(2., dim * double(n_global_refinements));
+    unsigned int n_nodes   = 0;
+    const double available = memory_of_nodes(communicator, n_nodes);
+    if (available > 0 && n_cells * bytes_per_cell > available)
+      {
+        std::ostringstream message;
+        message << std::setprecision(3) << "The mesh would have about "
+                << n_cells << " cells (" << source << " " << n_coarse
+                << " coarse cells, refined "
+                << "<Discretization/Initial global refinement> = "
+                << n_global_refinements << " times), which needs at least "
+                << n_cells * bytes_per_cell / 1e9 << " GB, more than the "
+                << available / 1e9 << " GB of memory of the " << n_nodes
+                << " node(s) this run has. Allowed: a mesh that fits, at "
+                   "1 kB per cell or more; give fewer cells or less "
+                   "refinement, or run on more nodes.";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+  }
+
+
+
   template <int dim>
   void
   Simulator<dim>::make_mesh()
   {
     TimerOutput::Scope t(timer, "Set up mesh");
+    // The size is checked before anything large is built: from the scene's
+    // own count if it has one, else from the coarse mesh.
+    if (scene->n_coarse_cells() > 0)
+      check_mesh_size(scene->n_coarse_cells(),
+                      "the scene's <Number of cells> give");
     scene->create_coarse_mesh(triangulation);
+    check_mesh_size(triangulation.n_global_active_cells(),
+                    "the scene's coarse mesh has");
     for (const auto &cell : triangulation.active_cell_iterators())
       materials.check_material_id(cell->material_id());
     triangulation.refine_global(n_global_refinements);

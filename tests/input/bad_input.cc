@@ -166,6 +166,24 @@ main(int argc, char **argv)
         base + gmsh + "gmsh_header_body.msh\n  end\nend\n");
   write("fault_region_nan.prm",
         base + fault + "  set Fault region = 0/0\nend\n");
+  // A quadrilateral in Gmsh 2.2 with a named bottom edge: a twisted one
+  // (nodes 3 and 4 swapped) and one with a repeated node.
+  const auto quad = [](const std::string &nodes) {
+    return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n"
+           "1 1 \"bottom\"\n2 2 \"rock\"\n$EndPhysicalNames\n$Nodes\n4\n"
+           "1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n$Elements\n2\n"
+           "1 1 2 1 1 1 2\n2 3 2 2 1 " +
+           nodes + "\n$EndElements\n";
+  };
+  write("gmsh_bow_tie.msh", quad("1 2 4 3"));
+  write("gmsh_repeated_node.msh", quad("1 2 3 3"));
+  write("gmsh_bow_tie.prm", base + gmsh + "gmsh_bow_tie.msh\n  end\nend\n");
+  write("gmsh_repeated_node.prm",
+        base + gmsh + "gmsh_repeated_node.msh\n  end\nend\n");
+  write("self_include.prm", base + "include self_include.prm\n");
+  write("include_a.prm", base + "include include_b.prm\n");
+  write("include_b.prm", "include include_a.prm\n");
+  write("deep.json", std::string(100000, '[') + std::string(100000, ']'));
 
   check("unknown entry", {"unknown_entry.prm"});
   check("malformed value", {"malformed_value.prm"});
@@ -246,6 +264,37 @@ main(int argc, char **argv)
   check("Gmsh format 3.0", {"gmsh_version.prm"});
   check("Gmsh header 4.1 over a 2.2 body", {"gmsh_header_body.prm"});
   check("fault region that is not finite", {"fault_region_nan.prm"});
+  check("Gmsh cell with crossing edges", {"gmsh_bow_tie.prm"});
+  check("Gmsh cell with a repeated node", {"gmsh_repeated_node.prm"});
+  check("parameter file that includes itself", {"self_include.prm"});
+  check("parameter files that include each other", {"include_a.prm"});
+  check("JSON parameter file nested 100 000 deep", {"deep.json"});
+  // The memory of the machine is in the message: only its parts are
+  // printed.
+  for (const std::string &set : {"Scene/Box/Number of cells=100000, 100000",
+                                 "Discretization/Initial global refinement=12"})
+    {
+      // 2-D for the box of 1e10 cells, 3-D for 8 cells refined 12 times.
+      const std::string dimension =
+        set[0] == 'S' ? "Dimension=2" : "Dimension=3";
+      std::string errors;
+      const int   code =
+        tests::run_capture({"valid.prm", "--set", dimension, "--set", set},
+                           errors);
+      std::printf("* a mesh too large for the machine (%s)\n  exit code: %d\n"
+                  "  names the cell count, the refinement, the memory and "
+                  "what is allowed: %s\n",
+                  set.c_str(),
+                  code,
+                  errors.find("The mesh would have about ") !=
+                        std::string::npos &&
+                      errors.find("<Discretization/Initial global "
+                                  "refinement>") != std::string::npos &&
+                      errors.find("GB of memory of the") != std::string::npos &&
+                      errors.find("Allowed:") != std::string::npos ?
+                    "yes" :
+                    "no");
+    }
 
   std::printf("* earlier results kept: %s\n",
               tests::read_file("earlier-run/statistics") ==

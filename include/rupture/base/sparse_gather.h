@@ -45,6 +45,12 @@ namespace rupture
     void
     scatter_add(const std::vector<double> &values, double *owned_values) const;
 
+    /// The owned entries (indices into the owned array, increasing) that
+    /// gather() reads and scatter_add() may change on this rank: those of
+    /// its own indices and those that other ranks read or add to.
+    std::vector<unsigned int>
+    owned_entries() const;
+
     /// Number of indices.
     std::size_t
     size() const

@@ -233,6 +233,17 @@ namespace rupture
                           VectorType       &force);
 
       /**
+       * The entries of a vector's locally owned array (indices into it,
+       * increasing) that assemble_split_node() reads or adds to on this
+       * rank; the force it adds is zero everywhere else.
+       */
+      std::vector<unsigned int>
+      split_node_entries() const
+      {
+        return pair_dofs.owned_entries();
+      }
+
+      /**
        * Accept the trial states of the last assemble() as the new state.
        */
       void

@@ -38,6 +38,9 @@ namespace rupture
       std::map<std::string, types::boundary_id>
       get_boundary_names() const override;
 
+      double
+      n_coarse_cells() const override;
+
     private:
       Point<dim>                lower_corner;
       Point<dim>                upper_corner;

@@ -46,6 +46,16 @@ namespace rupture
        */
       virtual std::map<std::string, types::boundary_id>
       get_boundary_names() const = 0;
+
+      /**
+       * The number of cells of the coarse mesh if it is known before the
+       * mesh is built (for the memory check before set-up), else 0.
+       */
+      virtual double
+      n_coarse_cells() const
+      {
+        return 0;
+      }
     };
 
 

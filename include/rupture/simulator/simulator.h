@@ -81,6 +81,10 @@ namespace rupture
     parse_parameters(ParameterHandler &prm);
     void
     make_mesh();
+    /// Refuse a mesh of @p n_coarse coarse cells (as @p source says) whose
+    /// refined size cannot fit in the memory of the run's nodes.
+    void
+    check_mesh_size(const double n_coarse, const std::string &source) const;
     void
     setup_dofs();
     void
@@ -148,6 +152,13 @@ namespace rupture
      */
     void
     precondition_system(const VectorType &r, VectorType &z) const;
+    /**
+     * K x with the matrix-free operator, left in its destination vector:
+     * the owned entries, valid until its next product. nullptr without a
+     * matrix-free operator.
+     */
+    const double *
+    apply_stiffness_in_place(const VectorType &x) const;
     /**
      * y = stiffness_factor K x + mass_factor M x with the matrix-free
      * operator (M the consistent mass).
@@ -418,6 +429,8 @@ namespace rupture
     /// fault's forces. And the load of the step if it varies.
     VectorType old_displacement, stiffness_force, step_residual, fault_force,
       step_load;
+    /// The owned entries the split-node fault force touches.
+    std::vector<unsigned int> fault_entries;
     /// What each locally owned DoF is, for the explicit step's energy
     /// budget.
     enum DofKind : unsigned char
