@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -143,6 +144,11 @@ namespace rupture
                                  "> must be a comma separated list of "
                                  "numbers, but <" +
                                  item + "> is not a number."));
+          AssertThrow(std::isfinite(value),
+                      ExcMessage("The entry <" + entry_name +
+                                 "> must be a comma separated list of finite "
+                                 "numbers, but holds <" +
+                                 item + ">."));
           values.push_back(value);
         }
       return values;

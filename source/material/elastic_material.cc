@@ -198,6 +198,29 @@ namespace rupture
                 m.mu     = E / (2 * (1 + nu));
                 m.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
               }
+            // Each value may be fine and their combination overflow (a
+            // density of 1e308 times a squared wave speed).
+            const double vp = m.p_wave_speed(), vs = m.s_wave_speed();
+            const auto   number = [](const double x) {
+              std::ostringstream out;
+              out << x;
+              return out.str();
+            };
+            AssertThrow(std::isfinite(m.mu) && std::isfinite(m.lambda) &&
+                          std::isfinite(vp) && std::isfinite(vs) && vp > 0 &&
+                          vs > 0,
+                        ExcMessage("The elastic constants" + which +
+                                   " are out of range: from its <Material> "
+                                   "entries (density " +
+                                   number(m.density) +
+                                   " kg/m^3) follow mu = " + number(m.mu) +
+                                   " Pa, lambda = " + number(m.lambda) +
+                                   " Pa, vp = " + number(vp) +
+                                   " m/s and vs = " + number(vs) +
+                                   " m/s. Allowed: values whose moduli and "
+                                   "wave speeds are finite and positive (in "
+                                   "SI units: e.g. 2700 kg/m^3, 6000 and "
+                                   "3464 m/s)."));
           }
       }
       prm.leave_subsection();

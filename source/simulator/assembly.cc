@@ -129,6 +129,16 @@ namespace rupture
 
     Tensor<1, dim> g;
     g[dim - 1] = -gravity;
+    // The same check on every rank: all have all materials.
+    std::ostringstream gravity_text;
+    gravity_text << gravity;
+    for (unsigned int i = 0; i < materials.n_materials(); ++i)
+      AssertThrow(std::isfinite(materials.get(i).density * gravity),
+                  ExcMessage("<Loads/Gravity> = " + gravity_text.str() +
+                             " m/s^2 times the density of material " +
+                             std::to_string(i) + " (" + materials.get(i).name +
+                             ") is not a finite force density. Allowed: a "
+                             "finite product (e.g. 9.81 m/s^2)."));
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -407,8 +417,9 @@ namespace rupture
                                   update_JxW_values);
     Vector<double>                       local, f(dim);
     std::vector<types::global_dof_index> dofs;
+    std::string                          bad_point;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && bad_point.empty())
         {
           const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
           hp_values.reinit(cell);
@@ -422,13 +433,31 @@ namespace rupture
               body_force->vector_value(fe_values.quadrature_point(q), f);
               Tensor<1, dim> force;
               for (unsigned int d = 0; d < dim; ++d)
-                force[d] = f(d);
+                {
+                  force[d] = f(d);
+                  if (!std::isfinite(f(d)) && bad_point.empty())
+                    {
+                      std::ostringstream where;
+                      where << "(" << fe_values.quadrature_point(q) << ")";
+                      bad_point = where.str();
+                    }
+                }
               for (unsigned int i = 0; i < n; ++i)
                 local(i) +=
                   (force * fe_values[u].value(i, q)) * fe_values.JxW(q);
             }
           hanging_constraints.distribute_local_to_global(local, dofs, load);
         }
+    // Every process stops, not only the one that found the value.
+    AssertThrow(dealii::Utilities::MPI::max(bad_point.empty() ? 0 : 1,
+                                            communicator) == 0,
+                ExcMessage("<Loads/Body force> is not a finite number at " +
+                           (bad_point.empty() ?
+                              std::string("a point of another process") :
+                              bad_point) +
+                           " at t = " + std::to_string(time) +
+                           " s. Allowed are expressions that are finite "
+                           "throughout the body and the run."));
     load.compress(VectorOperation::add);
   }
 

@@ -63,6 +63,13 @@ namespace rupture
     record_memory("DoFs and fault");
     assemble_physics_matrices();
     record_memory("operators");
+    // A body force that is not finite at t = 0 is an input error too
+    // (assemble_load_vector() names the entry and the place).
+    if (has_body_force)
+      {
+        VectorType load(locally_owned_dofs, communicator);
+        assemble_load_vector(0, load);
+      }
 
     // Everything that can reject the input has run; only now is the output
     // directory touched, so a bad input never destroys earlier results.

@@ -269,6 +269,14 @@ main(int argc, char **argv)
   check("parameter file that includes itself", {"self_include.prm"});
   check("parameter files that include each other", {"include_a.prm"});
   check("JSON parameter file nested 100 000 deep", {"deep.json"});
+  check("body force that is not finite",
+        {"valid.prm", "--set", "Loads/Body force=1/0; 0"});
+  check("gravity whose force density overflows",
+        {"valid.prm", "--set", "Loads/Gravity=1e308"});
+  check("density whose moduli overflow",
+        {"valid.prm", "--set", "Material/Density=1e308"});
+  check("receiver at nan",
+        {"valid.prm", "--set", "Output/Receivers=r1: nan, 0"});
   // The memory of the machine is in the message: only its parts are
   // printed.
   for (const std::string &set : {"Scene/Box/Number of cells=100000, 100000",
