@@ -268,5 +268,24 @@ namespace rupture
           result += (result.empty() ? "" : " ") + dealii::Utilities::trim(line);
       return result;
     }
+    void
+    throw_if_any(const std::string &error, const MPI_Comm communicator)
+    {
+      const unsigned int n_ranks =
+        dealii::Utilities::MPI::n_mpi_processes(communicator);
+      const unsigned int mine =
+        error.empty() ? n_ranks :
+                        dealii::Utilities::MPI::this_mpi_process(communicator);
+      const unsigned int first =
+        dealii::Utilities::MPI::min(mine, communicator);
+      if (first == n_ranks)
+        return;
+      const std::string message =
+        dealii::Utilities::MPI::broadcast(communicator, error, first);
+      AssertThrow(false, ExcMessage(message));
+    }
+
+
+
   } // namespace Utilities
 } // namespace rupture

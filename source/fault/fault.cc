@@ -348,69 +348,104 @@ namespace rupture
       }
 
       pairs.clear();
+      // A check that fails at one pair is reported by every process
+      // (Utilities::throw_if_any()), not only by the one that owns it.
+      std::string error;
       for (auto &[key, pair] : fault_nodes)
-        if (locally_owned_dofs.is_element(pair.minus[0]))
-          {
-            for (unsigned int c = 0; c < dim; ++c)
-              pair.normal[c] = area_normal(pair.minus[c]);
-            pair.area = pair.normal.norm();
-            AssertThrow(pair.area > 0, ExcInternalError());
-            pair.normal /= pair.area;
-            const Point<3> x = to_3d(pair.location);
-            for (unsigned int c = 0; c < dim; ++c)
-              pair.initial_traction[c] =
-                initial_traction->value(pair.location, c);
-            pair.background_traction = pair.initial_traction;
-            // The fault slips from the start at its initial slip velocity
-            // (along the fault).
-            pair.slip_velocity =
-              initial_slip_velocity -
-              (initial_slip_velocity * pair.normal) * pair.normal;
-            if (traction_perturbation)
-              for (unsigned int c = 0; c < dim; ++c)
-                pair.perturbation[c] =
-                  traction_perturbation->value(pair.location, c);
-            pair.normal_penalty     = normal_penalty->value(pair.location);
-            pair.tangential_penalty = tangential_penalty->value(pair.location);
-            std::ostringstream where, values;
-            where << pair.location;
-            values << pair.normal_penalty << " and " << pair.tangential_penalty;
-            AssertThrow(split_node_method || (pair.normal_penalty > 0 &&
-                                              pair.tangential_penalty > 0),
-                        ExcMessage("<Fault/Normal penalty> and <Fault/"
-                                   "Tangential penalty> must be > 0 (Pa/m), "
-                                   "but are " +
-                                   values.str() + " at (" + where.str() +
-                                   ")."));
+        if (locally_owned_dofs.is_element(pair.minus[0]) && error.empty())
+          try
             {
-              const double tn = pair.initial_traction * pair.normal;
-              const double ts =
-                (pair.initial_traction - tn * pair.normal).norm();
-              friction_law->initialize_state(
-                x,
-                (tn < 0) ? ts / (-tn) :
-                           std::numeric_limits<double>::quiet_NaN(),
-                pair.state);
-              pair.state.slip_rate = pair.slip_velocity.norm();
-              pair.rupture_rate    = pair.state.slip_rate;
-            }
-            if (forced_region->value(pair.location) != 0)
+              for (unsigned int c = 0; c < dim; ++c)
+                pair.normal[c] = area_normal(pair.minus[c]);
+              pair.area = pair.normal.norm();
+              AssertThrow(pair.area > 0, ExcInternalError());
+              pair.normal /= pair.area;
+              const Point<3> x = to_3d(pair.location);
+              for (unsigned int c = 0; c < dim; ++c)
+                pair.initial_traction[c] =
+                  initial_traction->value(pair.location, c);
               {
-                pair.forced = true;
-                pair.forced_direction =
-                  forced_direction -
-                  (forced_direction * pair.normal) * pair.normal;
-                AssertThrow(
-                  pair.forced_direction.norm() > 1e-6 * forced_direction.norm(),
-                  ExcMessage("<Fault/Forced slip/Direction> is normal to "
-                             "the fault at (" +
-                             where.str() +
-                             "): it has no component along the fault to "
-                             "slip in."));
-                pair.forced_direction /= pair.forced_direction.norm();
+                std::ostringstream text;
+                text << "<Fault/Initial traction> is not finite at the fault "
+                        "point ("
+                     << pair.location << "): it is (" << pair.initial_traction
+                     << ") Pa. Allowed: expressions that are finite on the "
+                        "whole fault.";
+                bool finite = true;
+                for (unsigned int c = 0; c < dim; ++c)
+                  finite = finite && std::isfinite(pair.initial_traction[c]);
+                AssertThrow(finite, ExcMessage(text.str()));
               }
-            pairs.push_back(pair);
-          }
+              pair.background_traction = pair.initial_traction;
+              // The fault slips from the start at its initial slip velocity
+              // (along the fault).
+              pair.slip_velocity =
+                initial_slip_velocity -
+                (initial_slip_velocity * pair.normal) * pair.normal;
+              if (traction_perturbation)
+                for (unsigned int c = 0; c < dim; ++c)
+                  {
+                    pair.perturbation[c] =
+                      traction_perturbation->value(pair.location, c);
+                    std::ostringstream text;
+                    text << "<Fault/Traction perturbation/Traction> is not "
+                            "finite at the fault point ("
+                         << pair.location << "): its component " << c << " is "
+                         << pair.perturbation[c]
+                         << " Pa. Allowed: expressions that are finite on the "
+                            "whole fault.";
+                    AssertThrow(std::isfinite(pair.perturbation[c]),
+                                ExcMessage(text.str()));
+                  }
+              pair.normal_penalty = normal_penalty->value(pair.location);
+              pair.tangential_penalty =
+                tangential_penalty->value(pair.location);
+              std::ostringstream where, values;
+              where << pair.location;
+              values << pair.normal_penalty << " and "
+                     << pair.tangential_penalty;
+              AssertThrow(split_node_method || (pair.normal_penalty > 0 &&
+                                                pair.tangential_penalty > 0),
+                          ExcMessage("<Fault/Normal penalty> and <Fault/"
+                                     "Tangential penalty> must be > 0 (Pa/m), "
+                                     "but are " +
+                                     values.str() + " at (" + where.str() +
+                                     ")."));
+              {
+                const double tn = pair.initial_traction * pair.normal;
+                const double ts =
+                  (pair.initial_traction - tn * pair.normal).norm();
+                friction_law->initialize_state(
+                  x,
+                  (tn < 0) ? ts / (-tn) :
+                             std::numeric_limits<double>::quiet_NaN(),
+                  pair.state);
+                pair.state.slip_rate = pair.slip_velocity.norm();
+                pair.rupture_rate    = pair.state.slip_rate;
+              }
+              if (forced_region->value(pair.location) != 0)
+                {
+                  pair.forced = true;
+                  pair.forced_direction =
+                    forced_direction -
+                    (forced_direction * pair.normal) * pair.normal;
+                  AssertThrow(pair.forced_direction.norm() >
+                                1e-6 * forced_direction.norm(),
+                              ExcMessage(
+                                "<Fault/Forced slip/Direction> is normal to "
+                                "the fault at (" +
+                                where.str() +
+                                "): it has no component along the fault to "
+                                "slip in."));
+                  pair.forced_direction /= pair.forced_direction.norm();
+                }
+              pairs.push_back(pair);
+            }
+          catch (const ExceptionBase &e)
+            {
+              error = Utilities::message_of(e);
+            }
+      Utilities::throw_if_any(error, communicator);
 
       {
         // The split-node method and the matrix-free contact tangent read

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 
 namespace rupture
@@ -63,13 +64,44 @@ namespace rupture
     record_memory("DoFs and fault");
     assemble_physics_matrices();
     record_memory("operators");
-    // A body force that is not finite at t = 0 is an input error too
-    // (assemble_load_vector() names the entry and the place).
+    // A body force or initial conditions that are not finite at t = 0 are
+    // input errors too (assemble_load_vector() names the entry and the
+    // place).
     if (has_body_force)
       {
         VectorType load(locally_owned_dofs, communicator);
         assemble_load_vector(0, load);
       }
+    {
+      std::string error;
+      for_each_support_point(
+        [](const auto &cell) { return cell->is_locally_owned(); },
+        [&](const auto &cell,
+            const std::vector<types::global_dof_index> &,
+            const std::vector<Point<dim>> &points) {
+          const auto &fe = cell->get_fe();
+          for (unsigned int i = 0; i < points.size() && error.empty(); ++i)
+            {
+              const unsigned int c =
+                fe.system_to_component_index(i).first % dim;
+              for (const auto &[function, name] :
+                   {std::make_pair(initial_displacement.get(),
+                                   "Initial conditions/Displacement"),
+                    std::make_pair(initial_velocity.get(),
+                                   "Initial conditions/Velocity")})
+                if (!std::isfinite(function->value(points[i], c)))
+                  {
+                    std::ostringstream text;
+                    text << "<" << name << "> is not finite at (" << points[i]
+                         << "), component " << c
+                         << ". Allowed: expressions that are finite "
+                            "throughout the body.";
+                    error = text.str();
+                  }
+            }
+        });
+      Utilities::throw_if_any(error, communicator);
+    }
 
     // Everything that can reject the input has run; only now is the output
     // directory touched, so a bad input never destroys earlier results.

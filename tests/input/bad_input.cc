@@ -277,6 +277,20 @@ main(int argc, char **argv)
         {"valid.prm", "--set", "Material/Density=1e308"});
   check("receiver at nan",
         {"valid.prm", "--set", "Output/Receivers=r1: nan, 0"});
+  check("initial traction that is not finite",
+        {"fault_penalty.prm",
+         "--set",
+         "Fault/Normal penalty=1e11",
+         "--set",
+         "Fault/Initial traction=0/0; -1e6"});
+  check("traction perturbation that is not finite",
+        {"fault_penalty.prm",
+         "--set",
+         "Fault/Normal penalty=1e11",
+         "--set",
+         "Fault/Traction perturbation/Traction=log(0); 0"});
+  check("initial velocity that is not finite",
+        {"valid.prm", "--set", "Initial conditions/Velocity=0; 1/0"});
   // The memory of the machine is in the message: only its parts are
   // printed.
   for (const std::string &set : {"Scene/Box/Number of cells=100000, 100000",

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
@@ -88,6 +89,15 @@ namespace rupture
      */
     std::string
     message_of(const ExceptionBase &e);
+
+    /**
+     * Collective: if @p error is not empty on any process of
+     * @p communicator, every process throws the error of the lowest such
+     * process (so that a check that fails on one process only stops all of
+     * them instead of leaving the others waiting).
+     */
+    void
+    throw_if_any(const std::string &error, const MPI_Comm communicator);
   } // namespace Utilities
 } // namespace rupture
 
