@@ -208,8 +208,7 @@ namespace rupture
       // corrupted the reader's memory, so the body's section headers are
       // checked against the version below.
       std::getline(in, line);
-      std::string version;
-      int         file_type = -1;
+      int file_type = -1;
       {
         std::istringstream words(line);
         words >> version >> file_type;
@@ -304,15 +303,7 @@ namespace rupture
       Triangulation<dim> serial;
       GridIn<dim>        grid_in;
       grid_in.attach_triangulation(serial);
-      {
-        std::ifstream head(file_name);
-        std::string   line, version;
-        while (std::getline(head, line) &&
-               dealii::Utilities::trim(line) != "$MeshFormat")
-          ;
-        head >> version;
-        check_cell_nodes<dim>(file_name, version);
-      }
+      check_cell_nodes<dim>(file_name, version);
       std::ifstream in(file_name);
       try
         {

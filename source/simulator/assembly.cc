@@ -547,8 +547,7 @@ namespace rupture
   double
   Simulator<dim>::compute_l2_error(const double time) const
   {
-    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
-    u_ghost = displacement;
+    const VectorType &u_ghost = ghosted_copy(0, displacement);
     exact_displacement->set_time(time);
     const hp::QCollection<dim>  q_cells(QGauss<dim>(fe_degree + 2));
     hp::FEValues<dim>           hp_values(fe_collection,

@@ -129,11 +129,27 @@ namespace rupture
     if (!stiffness_matrix_free)
       return nullptr;
     TimerOutput::Scope t(timer, "Stiffness product matrix-free");
+    return apply_elastic_in_place(x, 1, 0);
+  }
+
+
+
+  template <int dim>
+  const double *
+  Simulator<dim>::apply_elastic_in_place(const VectorType &x,
+                                         const double      stiffness_factor,
+                                         const double      mass_factor) const
+  {
+    // Both vectors number their owned entries in increasing global order,
+    // so the owned parts copy one to one.
     const unsigned int n_owned = operator_src.locally_owned_size();
     AssertDimension(static_cast<unsigned int>(x.locally_owned_size()), n_owned);
     const double *xs = x.trilinos_vector()[0];
     std::copy(xs, xs + n_owned, operator_src.begin());
-    elastic_operator->vmult(operator_dst, operator_src, 1, 0);
+    elastic_operator->vmult(operator_dst,
+                            operator_src,
+                            stiffness_factor,
+                            mass_factor);
     return operator_dst.begin();
   }
 
@@ -146,18 +162,26 @@ namespace rupture
                                 const double      stiffness_factor,
                                 const double      mass_factor) const
   {
-    // Both vectors number their owned entries in increasing global order,
-    // so the owned parts copy one to one.
-    const unsigned int n_owned = operator_src.locally_owned_size();
-    AssertDimension(static_cast<unsigned int>(x.locally_owned_size()), n_owned);
-    const double *xs = x.trilinos_vector()[0];
-    std::copy(xs, xs + n_owned, operator_src.begin());
-    elastic_operator->vmult(operator_dst,
-                            operator_src,
-                            stiffness_factor,
-                            mass_factor);
-    double *ys = y.trilinos_vector()[0];
-    std::copy(operator_dst.begin(), operator_dst.begin() + n_owned, ys);
+    const double *result =
+      apply_elastic_in_place(x, stiffness_factor, mass_factor);
+    std::copy(result,
+              result + operator_src.locally_owned_size(),
+              y.trilinos_vector()[0]);
+  }
+
+
+
+  template <int dim>
+  const typename Simulator<dim>::VectorType &
+  Simulator<dim>::ghosted_copy(const unsigned int slot,
+                               const VectorType  &v) const
+  {
+    if (!ghosts)
+      ghosts = std::make_unique<GhostedVectors>(locally_owned_dofs,
+                                                locally_relevant_dofs,
+                                                communicator,
+                                                2);
+    return ghosts->copy(slot, v);
   }
 
 

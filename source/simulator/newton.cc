@@ -68,9 +68,7 @@ namespace rupture
                                    const double sign)
   {
     TimerOutput::Scope t(timer, "Fault contact");
-    VectorType u_ghost(locally_owned_dofs, locally_relevant_dofs, communicator);
-    u_ghost = displacement;
-    fault->assemble(u_ghost,
+    fault->assemble(ghosted_copy(0, displacement),
                     time_step,
                     hanging_constraints,
                     force,
@@ -389,12 +387,8 @@ namespace rupture
         unsigned int n_limited = 0;
         if (fault && limit_stick_crossings && !stick_crossing_limit_suspended)
           {
-            VectorType d_ghost(locally_owned_dofs,
-                               locally_relevant_dofs,
-                               communicator);
-            d_ghost   = increment;
             scratch   = 0;
-            n_limited = fault->limit_stick_crossings(d_ghost,
+            n_limited = fault->limit_stick_crossings(ghosted_copy(1, increment),
                                                      increment_constraints,
                                                      scratch);
             stick_crossings_limited += n_limited;

@@ -63,7 +63,9 @@ namespace rupture
   template <int dim>
   void
   Simulator<dim>::check_mesh_size(const double       n_coarse,
-                                  const std::string &source) const
+                                  const std::string &source,
+                                  const double       available,
+                                  const unsigned int n_nodes) const
   {
     // A lower bound of what a cell costs with everything the run builds on
     // it (about 1.6 kB for Q1 and 6.5 kB for Q2 hexahedra, measured): a
@@ -71,8 +73,6 @@ namespace rupture
     const double bytes_per_cell = 1000;
     const double n_cells =
       n_coarse * std::pow(2., dim * double(n_global_refinements));
-    unsigned int n_nodes   = 0;
-    const double available = memory_of_nodes(communicator, n_nodes);
     if (available > 0 && n_cells * bytes_per_cell > available)
       {
         std::ostringstream message;
@@ -99,12 +99,18 @@ namespace rupture
     TimerOutput::Scope t(timer, "Set up mesh");
     // The size is checked before anything large is built: from the scene's
     // own count if it has one, else from the coarse mesh.
+    unsigned int n_nodes   = 0;
+    const double available = memory_of_nodes(communicator, n_nodes);
     if (scene->n_coarse_cells() > 0)
       check_mesh_size(scene->n_coarse_cells(),
-                      "the scene's <Number of cells> give");
+                      "the scene's <Number of cells> give",
+                      available,
+                      n_nodes);
     scene->create_coarse_mesh(triangulation);
     check_mesh_size(triangulation.n_global_active_cells(),
-                    "the scene's coarse mesh has");
+                    "the scene's coarse mesh has",
+                    available,
+                    n_nodes);
     for (const auto &cell : triangulation.active_cell_iterators())
       materials.check_material_id(cell->material_id());
     triangulation.refine_global(n_global_refinements);

@@ -65,43 +65,14 @@ namespace rupture
     assemble_physics_matrices();
     record_memory("operators");
     // A body force or initial conditions that are not finite at t = 0 are
-    // input errors too (assemble_load_vector() names the entry and the
-    // place).
+    // input errors too (assemble_load_vector() and
+    // interpolate_initial_conditions() name the entry and the place).
     if (has_body_force)
       {
         VectorType load(locally_owned_dofs, communicator);
         assemble_load_vector(0, load);
       }
-    {
-      std::string error;
-      for_each_support_point(
-        [](const auto &cell) { return cell->is_locally_owned(); },
-        [&](const auto &cell,
-            const std::vector<types::global_dof_index> &,
-            const std::vector<Point<dim>> &points) {
-          const auto &fe = cell->get_fe();
-          for (unsigned int i = 0; i < points.size() && error.empty(); ++i)
-            {
-              const unsigned int c =
-                fe.system_to_component_index(i).first % dim;
-              for (const auto &[function, name] :
-                   {std::make_pair(initial_displacement.get(),
-                                   "Initial conditions/Displacement"),
-                    std::make_pair(initial_velocity.get(),
-                                   "Initial conditions/Velocity")})
-                if (!std::isfinite(function->value(points[i], c)))
-                  {
-                    std::ostringstream text;
-                    text << "<" << name << "> is not finite at (" << points[i]
-                         << "), component " << c
-                         << ". Allowed: expressions that are finite "
-                            "throughout the body.";
-                    error = text.str();
-                  }
-            }
-        });
-      Utilities::throw_if_any(error, communicator);
-    }
+    interpolate_initial_conditions();
 
     // Everything that can reject the input has run; only now is the output
     // directory touched, so a bad input never destroys earlier results.
@@ -580,14 +551,11 @@ namespace rupture
     receivers->write(*output_directory, time_step);
     if (volume_due)
       {
-        // The ghosted copies are made at the first snapshot and kept (a
-        // run without volume output never pays for them).
-        if (!output_ghosts)
-          output_ghosts = std::make_unique<GhostedVectors>(
-            locally_owned_dofs, locally_relevant_dofs, communicator, 2);
-        const VectorType &u_ghost = output_ghosts->copy(0, displacement);
-        const VectorType &v_ghost = output_ghosts->copy(1, velocity);
-        volume_output->write(dof_handler, u_ghost, v_ghost, time, step);
+        volume_output->write(dof_handler,
+                             ghosted_copy(0, displacement),
+                             ghosted_copy(1, velocity),
+                             time,
+                             step);
         next_output_time = time + output_interval;
       }
     if (fault_due)

@@ -1,3 +1,4 @@
+#include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -316,15 +317,15 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::initialize_state()
+  Simulator<dim>::interpolate_initial_conditions()
   {
-    TimerOutput::Scope t(timer, "Initial state");
-
     // Interpolate the initial fields at the support points of the DoFs. A
     // fault's initial slip velocity moves each side rigidly at half of it
-    // (the minus side has FE index 0, the plus side 1).
+    // (the minus side has FE index 0, the plus side 1). A value that is not
+    // finite is an input error, reported by every process.
     const Tensor<1, dim> half_slip_velocity =
       fault ? 0.5 * fault->initial_slip_velocity_of_sides() : Tensor<1, dim>();
+    std::string error;
     for_each_support_point(
       [](const auto &cell) { return cell->is_locally_owned(); },
       [&](const auto                                 &cell,
@@ -337,16 +338,40 @@ namespace rupture
             {
               const unsigned int c =
                 fe.system_to_component_index(i).first % dim;
-              displacement(dofs[i]) = initial_displacement->value(points[i], c);
-              velocity(dofs[i])     = initial_velocity->value(points[i], c) +
-                                  side * half_slip_velocity[c];
+              const double u        = initial_displacement->value(points[i], c);
+              const double v        = initial_velocity->value(points[i], c);
+              displacement(dofs[i]) = u;
+              velocity(dofs[i])     = v + side * half_slip_velocity[c];
+              if (error.empty() && !(std::isfinite(u) && std::isfinite(v)))
+                {
+                  std::ostringstream text;
+                  text << "<Initial conditions/"
+                       << (std::isfinite(u) ? "Velocity" : "Displacement")
+                       << "> is not finite at (" << points[i] << "), component "
+                       << c
+                       << ". Allowed: expressions that are finite "
+                          "throughout the body.";
+                  error = text.str();
+                }
             }
       });
+    rupture::Utilities::throw_if_any(error, communicator);
     displacement.compress(VectorOperation::insert);
     velocity.compress(VectorOperation::insert);
     distribute_hanging(displacement);
     distribute_hanging(velocity);
+  }
 
+
+
+  template <int dim>
+  void
+  Simulator<dim>::initialize_state()
+  {
+    TimerOutput::Scope t(timer, "Initial state");
+
+    // The initial fields were interpolated in the constructor
+    // (interpolate_initial_conditions()).
     VectorType load(locally_owned_dofs, communicator);
     assemble_load_vector(0, load);
     contact_force = 0;

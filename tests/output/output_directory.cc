@@ -218,14 +218,23 @@ main(int argc, char **argv)
               code,
               from(errors, "Error").c_str());
 
-  // 5. SIGTERM 2 s into a long run (500 000 steps): it ends after
-  //    the step it is in, with every file written and complete.
+  // 5. SIGTERM into a long run (500 000 steps), once it is stepping (its
+  //    statistics of step 0 exist; the earlier run's are removed first,
+  //    so that a loaded machine's slow set-up cannot be hit): it ends
+  //    after the step it is in, with every file written and complete.
   std::thread signaller;
   if (root)
-    signaller = std::thread([]() {
-      std::this_thread::sleep_for(std::chrono::milliseconds(2000));
-      ::kill(::getpid(), SIGTERM);
-    });
+    {
+      fs::remove("results/statistics");
+      signaller = std::thread([]() {
+        for (unsigned int i = 0; i < 1200 && !fs::exists("results/statistics");
+             ++i)
+          std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        ::kill(::getpid(), SIGTERM);
+      });
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
   code = run(input(5000.), MPI_COMM_WORLD, errors);
   if (root)
     signaller.join();

@@ -33,7 +33,9 @@ namespace rupture
       get_boundary_names() const override;
 
     private:
-      std::string                               file_name;
+      std::string file_name;
+      /// The file's format, "2.2" or "4.1" (checked when it is parsed).
+      std::string                               version;
       std::map<std::string, types::boundary_id> boundary_names;
     };
   } // namespace Scene

@@ -81,10 +81,19 @@ namespace rupture
     parse_parameters(ParameterHandler &prm);
     void
     make_mesh();
-    /// Refuse a mesh of @p n_coarse coarse cells (as @p source says) whose
-    /// refined size cannot fit in the memory of the run's nodes.
+    /// Interpolate the initial displacement and velocity (with a fault's
+    /// initial slip velocity); a value that is not finite is an input
+    /// error. Runs before the output directory is touched.
     void
-    check_mesh_size(const double n_coarse, const std::string &source) const;
+    interpolate_initial_conditions();
+    /// Refuse a mesh of @p n_coarse coarse cells (as @p source says) whose
+    /// refined size cannot fit in the memory @p available (bytes) of the
+    /// run's @p n_nodes nodes (0: unknown, no check).
+    void
+    check_mesh_size(const double       n_coarse,
+                    const std::string &source,
+                    const double       available,
+                    const unsigned int n_nodes) const;
     void
     setup_dofs();
     void
@@ -159,6 +168,21 @@ namespace rupture
      */
     const double *
     apply_stiffness_in_place(const VectorType &x) const;
+    /**
+     * A ghosted copy of @p v in slot @p slot (0 or 1), valid until the
+     * slot's next use. Two slots: the volume output needs displacement and
+     * velocity together.
+     */
+    const VectorType &
+    ghosted_copy(const unsigned int slot, const VectorType &v) const;
+    /**
+     * stiffness_factor K x + mass_factor M x, left in the operator's
+     * destination vector (the owned entries, valid until its next product).
+     */
+    const double *
+    apply_elastic_in_place(const VectorType &x,
+                           const double      stiffness_factor,
+                           const double      mass_factor) const;
     /**
      * y = stiffness_factor K x + mass_factor M x with the matrix-free
      * operator (M the consistent mass).
@@ -529,9 +553,10 @@ namespace rupture
     double next_fault_output_time = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
-    /// The ghosted displacement and velocity of the volume snapshots.
-    std::unique_ptr<GhostedVectors> output_ghosts;
-    Output::Statistics              statistics;
+    /// Ghosted copies (locally relevant entries) with their exchange
+    /// pattern built once, at the first use (ghosted_copy()).
+    mutable std::unique_ptr<GhostedVectors> ghosts;
+    Output::Statistics                      statistics;
   };
 } // namespace rupture
 
