@@ -3,6 +3,7 @@
 
 #include <rupture/base/sparse_gather.h>
 #include <rupture/operators/elastic_operator.h>
+#include <rupture/operators/mesh_transfer.h>
 #include <rupture/operators/multigrid.h>
 #include <rupture/operators/pair_blocks.h>
 
@@ -31,119 +32,6 @@ namespace rupture
     {
       using VectorType = LinearAlgebra::distributed::Vector<double>;
 
-      /// Copy the owned entries of @p src into @p dst (same owned range).
-      void
-      copy_owned(const VectorType &src, VectorType &dst)
-      {
-        AssertDimension(src.locally_owned_size(), dst.locally_owned_size());
-        std::copy(src.begin(),
-                  src.begin() + src.locally_owned_size(),
-                  dst.begin());
-      }
-
-
-
-      /**
-       * Prolongation from a coarse level to the next finer one and its
-       * transpose, cell by cell. Each locally owned coarse cell knows its
-       * children on the fine mesh (the first child is owned by the same rank,
-       * the others are ghosts at least), or itself where the mesh did not
-       * change.
-       */
-      struct Transfer
-      {
-        struct Block
-        {
-          unsigned int              coarse_first, fine_first, n_dofs;
-          const FullMatrix<double> *matrix;
-        };
-        std::vector<Block>        blocks;
-        std::vector<unsigned int> coarse_dofs, fine_dofs;
-        std::shared_ptr<const Utilities::MPI::Partitioner> coarse_relevant,
-          fine_relevant;
-        VectorType         weights;
-        mutable VectorType coarse_ghosted, fine_ghosted;
-        /// The coarse level's hanging-node and welding constraints in
-        /// local indices: the prolongation first gives constrained coarse
-        /// DoFs their values, the restriction ends with the transpose.
-        std::vector<
-          std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
-          coarse_lines;
-
-        void
-        distribute_coarse() const
-        {
-          for (const auto &[i, entries] : coarse_lines)
-            {
-              double value = 0;
-              for (const auto &[j, w] : entries)
-                value += w * coarse_ghosted.local_element(j);
-              coarse_ghosted.local_element(i) = value;
-            }
-        }
-
-        void
-        condense_coarse() const
-        {
-          for (auto line = coarse_lines.rbegin(); line != coarse_lines.rend();
-               ++line)
-            {
-              const double value = coarse_ghosted.local_element(line->first);
-              coarse_ghosted.local_element(line->first) = 0;
-              for (const auto &[j, w] : line->second)
-                coarse_ghosted.local_element(j) += w * value;
-            }
-        }
-
-        /// fine = P coarse.
-        void
-        prolongate(const VectorType &coarse, VectorType &fine) const
-        {
-          coarse_ghosted.zero_out_ghost_values();
-          copy_owned(coarse, coarse_ghosted);
-          coarse_ghosted.update_ghost_values();
-          distribute_coarse();
-          fine_ghosted = 0;
-          for (const Block &b : blocks)
-            for (unsigned int i = 0; i < b.n_dofs; ++i)
-              {
-                double             value = 0;
-                const unsigned int fi    = fine_dofs[b.fine_first + i];
-                for (unsigned int j = 0; j < b.n_dofs; ++j)
-                  value +=
-                    (*b.matrix)(i, j) * coarse_ghosted.local_element(
-                                          coarse_dofs[b.coarse_first + j]);
-                fine_ghosted.local_element(fi) +=
-                  weights.local_element(fi) * value;
-              }
-          fine_ghosted.compress(VectorOperation::add);
-          copy_owned(fine_ghosted, fine);
-        }
-
-        /// coarse = P^T fine.
-        void restrict(const VectorType &fine, VectorType &coarse) const
-        {
-          fine_ghosted.zero_out_ghost_values();
-          copy_owned(fine, fine_ghosted);
-          fine_ghosted.update_ghost_values();
-          coarse_ghosted = 0;
-          for (const Block &b : blocks)
-            for (unsigned int i = 0; i < b.n_dofs; ++i)
-              {
-                const unsigned int fi = fine_dofs[b.fine_first + i];
-                const double       value =
-                  weights.local_element(fi) * fine_ghosted.local_element(fi);
-                if (value != 0)
-                  for (unsigned int j = 0; j < b.n_dofs; ++j)
-                    coarse_ghosted.local_element(
-                      coarse_dofs[b.coarse_first + j]) +=
-                      (*b.matrix)(i, j) * value;
-              }
-          condense_coarse();
-          coarse_ghosted.compress(VectorOperation::add);
-          copy_owned(coarse_ghosted, coarse);
-        }
-      };
     } // namespace
 
 
@@ -170,7 +58,7 @@ namespace rupture
       MPI_Comm                                     communicator;
       Description                                  description;
       std::vector<std::unique_ptr<Level>>          levels;
-      std::vector<Transfer>                        transfers;
+      std::vector<MeshTransfer<dim>>               transfers;
       std::vector<std::vector<FullMatrix<double>>> prolongation;
       double                                       stiffness_factor  = 1;
       double                                       mass_factor       = 0;
@@ -179,9 +67,6 @@ namespace rupture
 
       void
       setup_level(Level &level, const bool finest);
-
-      void
-      setup_transfer(const Level &coarse, const Level &fine, Transfer &t);
 
       /// dst = A_l src.
       void
@@ -282,83 +167,6 @@ namespace rupture
       for (const auto dof : owned)
         level.free.local_element(i++) =
           (c.is_constrained(dof) || fixed.is_element(dof)) ? 0. : 1.;
-    }
-
-
-
-    template <int dim>
-    void
-    Multigrid<dim>::Implementation::setup_transfer(const Level &coarse,
-                                                   const Level &fine,
-                                                   Transfer    &t)
-    {
-      const DoFHandler<dim>    &cdh   = *coarse.dof_handler;
-      const DoFHandler<dim>    &fdh   = *fine.dof_handler;
-      const Triangulation<dim> &ftria = fdh.get_triangulation();
-      t.coarse_relevant               = coarse.relevant;
-      t.fine_relevant                 = fine.relevant;
-      t.weights.reinit(fine.relevant);
-      t.coarse_ghosted.reinit(coarse.relevant);
-      t.fine_ghosted.reinit(fine.relevant);
-      const unsigned int n_children = GeometryInfo<dim>::max_children_per_cell;
-
-      std::vector<types::global_dof_index> cd, fd;
-      for (const auto &cell : cdh.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const unsigned int fe_index = cell->active_fe_index();
-            cd.resize(cell->get_fe().n_dofs_per_cell());
-            cell->get_dof_indices(cd);
-            const unsigned int coarse_first = t.coarse_dofs.size();
-            for (const auto g : cd)
-              t.coarse_dofs.push_back(coarse.relevant->global_to_local(g));
-            const auto tria_cell = ftria.create_cell_iterator(cell->id());
-            const typename DoFHandler<dim>::cell_iterator fine_cell(
-              &ftria, tria_cell->level(), tria_cell->index(), &fdh);
-            const auto add =
-              [&](const typename DoFHandler<dim>::cell_iterator &fc,
-                  const FullMatrix<double>                      &matrix) {
-                AssertThrow(fc->is_active() && !fc->is_artificial() &&
-                              fc->active_fe_index() == fe_index,
-                            ExcInternalError());
-                fd.resize(cd.size());
-                fc->get_dof_indices(fd);
-                t.blocks.push_back(
-                  {coarse_first,
-                   static_cast<unsigned int>(t.fine_dofs.size()),
-                   static_cast<unsigned int>(cd.size()),
-                   &matrix});
-                for (const auto g : fd)
-                  t.fine_dofs.push_back(fine.relevant->global_to_local(g));
-              };
-            if (fine_cell->is_active())
-              add(fine_cell, prolongation[fe_index][n_children]);
-            else
-              for (unsigned int c = 0; c < n_children; ++c)
-                add(fine_cell->child(c), prolongation[fe_index][c]);
-          }
-
-      // Each fine DoF gets the mean of what its cells give it.
-      t.weights = 0;
-      for (const auto &b : t.blocks)
-        for (unsigned int i = 0; i < b.n_dofs; ++i)
-          t.weights.local_element(t.fine_dofs[b.fine_first + i]) += 1;
-      t.weights.compress(VectorOperation::add);
-      for (unsigned int i = 0; i < t.weights.locally_owned_size(); ++i)
-        if (t.weights.local_element(i) > 0)
-          t.weights.local_element(i) = 1 / t.weights.local_element(i);
-      t.weights.update_ghost_values();
-
-      for (const auto &line : coarse.constraints.get_lines())
-        if (coarse.relevant->in_local_range(line.index) ||
-            coarse.relevant->is_ghost_entry(line.index))
-          {
-            std::vector<std::pair<unsigned int, double>> entries;
-            for (const auto &[j, w] : line.entries)
-              entries.emplace_back(coarse.relevant->global_to_local(j), w);
-            t.coarse_lines.emplace_back(
-              coarse.relevant->global_to_local(line.index), entries);
-          }
     }
 
 
@@ -600,7 +408,12 @@ namespace rupture
         }
       m.transfers.resize(n_levels - 1);
       for (unsigned int l = 1; l < n_levels; ++l)
-        m.setup_transfer(*m.levels[l - 1], *m.levels[l], m.transfers[l - 1]);
+        m.transfers[l - 1].reinit(*m.levels[l - 1]->dof_handler,
+                                  m.levels[l - 1]->relevant,
+                                  m.levels[l - 1]->constraints,
+                                  *m.levels[l]->dof_handler,
+                                  m.levels[l]->relevant,
+                                  m.prolongation);
     }
 
 
@@ -766,9 +579,7 @@ namespace rupture
           bytes += (12 + dim) * level->free.memory_consumption();
         }
       for (const auto &t : impl->transfers)
-        bytes +=
-          (t.coarse_dofs.size() + t.fine_dofs.size()) * sizeof(unsigned int) +
-          t.blocks.size() * sizeof(Transfer::Block);
+        bytes += t.memory_consumption();
       return bytes;
     }
   } // namespace Operators

@@ -251,8 +251,6 @@ namespace rupture
       absorbing_damping.compress(VectorOperation::add);
 
     // The first phase: the quasi-static loading phase, or the run itself.
-    current_scheme =
-      time_parameters.loading_phase ? Scheme::quasi_static : scheme;
     if (time_parameters.loading_phase)
       prepare_phase(Scheme::quasi_static,
                     time_parameters.loading_time_step,
@@ -312,21 +310,8 @@ namespace rupture
       }
     time_step = duration / n_steps;
 
-    if (scheme == Scheme::explicit_central_difference)
-      prepare_explicit_work();
-    else if (scheme == Scheme::implicit_newmark)
-      {
-        // Effective stiffness of eq. 14: K + a0 M + a1 C, with
-        // C = alpha M + beta K + C_absorbing.
-        const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
-                                                     time_parameters.gamma,
-                                                     time_step);
-        assemble_system_matrix(1 + a.a1 * rayleigh_beta,
-                               a.a0 + a.a1 * rayleigh_alpha,
-                               a.a1);
-      }
-    else
-      assemble_system_matrix(1, 0, 0);
+    integrator = TimeIntegration::create(scheme, *this);
+    integrator->prepare();
   }
 
 

@@ -101,7 +101,7 @@ namespace rupture
   Simulator<dim>::use_multigrid_now() const
   {
     return multigrid &&
-           (current_scheme == TimeIntegration::Scheme::quasi_static ||
+           (current_scheme() == TimeIntegration::Scheme::quasi_static ||
             linear_solver.multigrid_in_dynamic_steps());
   }
 

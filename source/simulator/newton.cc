@@ -1,5 +1,5 @@
 // Newton's method for implicit Newmark and quasi-static steps with a penalty
-// fault, and the step cuts of implicit_step().
+// fault (the step cuts are TimeIntegration::ImplicitNewmark's).
 
 #include <rupture/simulator/simulator.h>
 
@@ -371,7 +371,8 @@ namespace rupture
           last_linear_iterations += linear_iterations;
           {
             const unsigned int p =
-              (current_scheme == TimeIntegration::Scheme::quasi_static) ? 0 : 1;
+              (current_scheme() == TimeIntegration::Scheme::quasi_static) ? 0 :
+                                                                            1;
             total_linear_iterations[p] += linear_iterations;
             ++n_linear_solves[p];
           }
@@ -446,173 +447,6 @@ namespace rupture
         last_newton_iterations = k + 1;
       }
     check_finite(displacement, "displacement");
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::implicit_step()
-  {
-    // Try the step; if Newton's method fails, redo it as two half steps,
-    // recursively, up to <Solver/Maximum step cuts> times. The fault state
-    // and the energy budget change only when a (sub)step has converged.
-    // After a cut the following steps start from the sub-step size that
-    // converged (a step that failed at full size tends to fail again in the
-    // next one), and double it again after two steps without a cut.
-    const double end = time, dt = time_step;
-    const auto   set_step = [&](const double h) {
-      time_step = h;
-      const TimeIntegration::NewmarkCoefficients c(time_parameters.beta,
-                                                   time_parameters.gamma,
-                                                   h);
-      assemble_system_matrix(1 + c.a1 * rayleigh_beta,
-                             c.a0 + c.a1 * rayleigh_alpha,
-                             c.a1);
-    };
-    unsigned int                                      deepest = 0;
-    bool                                              cut     = false;
-    std::function<void(double, double, unsigned int)> attempt =
-      [&](const double t_start, const double h, const unsigned int depth) {
-        const VectorType u(displacement), v(velocity), a(acceleration);
-        if (h != time_step)
-          set_step(h);
-        time = t_start + h;
-        if (fault)
-          fault->set_time(time);
-        // Give up early on a stalled Newton iteration only where the
-        // step can still be cut; at the last level it iterates on.
-        newton_may_cut = (depth < max_step_cuts);
-        try
-          {
-            try
-              {
-                implicit_substep();
-              }
-            catch (const NewtonFailure &failure)
-              {
-                // The stick-crossing limit can keep a node from the far
-                // side of its stick region where its solution lies (seen
-                // with time steps 100-1000 times the explicit limit): try
-                // the step once more without it before cutting it.
-                if (stick_crossings_limited == 0)
-                  throw;
-                displacement = u;
-                velocity     = v;
-                acceleration = a;
-                pcout << "    Newton failed with dt = " << h << " s ("
-                      << failure.reason
-                      << ") after limiting stick crossings: the step is "
-                         "tried again without the limit\n";
-                // (If it fails again, the catch below ends the suspension.)
-                stick_crossing_limit_suspended = true;
-                implicit_substep();
-                stick_crossing_limit_suspended = false;
-              }
-            newton_may_cut = false;
-            deepest        = std::max(deepest, depth);
-          }
-        catch (const NewtonFailure &failure)
-          {
-            newton_may_cut                 = false;
-            stick_crossing_limit_suspended = false;
-            if (depth == max_step_cuts)
-              throw NewtonFailure(std::string(failure.what()) +
-                                    " The step was cut " +
-                                    std::to_string(depth) +
-                                    " times (<Solver/Maximum step cuts>).",
-                                  failure.reason);
-            displacement = u;
-            velocity     = v;
-            acceleration = a;
-            pcout << "    Newton failed with dt = " << h << " s ("
-                  << failure.reason << "): the step is cut in half\n";
-            ++n_step_cuts;
-            cut = true;
-            attempt(t_start, h / 2, depth + 1);
-            attempt(t_start + h / 2, h / 2, depth + 1);
-          }
-      };
-    const unsigned int start_depth = std::min(substep_depth, max_step_cuts);
-    const unsigned int n_substeps  = 1u << start_depth;
-    if (n_substeps > 1)
-      pcout << "    taken as " << n_substeps << " sub-steps of "
-            << dt / n_substeps << " s after an earlier step cut\n";
-    for (unsigned int i = 0; i < n_substeps; ++i)
-      attempt(end - dt + i * (dt / n_substeps), dt / n_substeps, start_depth);
-    if (cut)
-      {
-        substep_depth     = deepest;
-        steps_without_cut = 0;
-      }
-    else if (substep_depth > 0 && ++steps_without_cut >= 2)
-      {
-        --substep_depth;
-        steps_without_cut = 0;
-      }
-    if (time_step != dt)
-      set_step(dt);
-    time = end;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::implicit_substep()
-  {
-    TimerOutput::Scope                         t(timer, "Implicit step");
-    const TimeIntegration::NewmarkCoefficients a(time_parameters.beta,
-                                                 time_parameters.gamma,
-                                                 time_step);
-    const double                               gamma = time_parameters.gamma;
-
-    const VectorType old_u(displacement), old_v(velocity), old_a(acceleration);
-    VectorType load(displacement), residual(displacement), tmp(displacement),
-      cv(displacement);
-    assemble_load_vector(time, load);
-
-    // New velocity and acceleration as functions of the new displacement
-    // (Newmark, eq. 12), and the residual f - M a - C v - K u - F_contact.
-    const auto update_rates = [&]() {
-      acceleration = displacement;
-      acceleration -= old_u;
-      acceleration *= a.a0;
-      acceleration.add(-a.a2, old_v, -a.a3, old_a);
-      velocity = old_v;
-      velocity.add((1 - gamma) * time_step,
-                   old_a,
-                   gamma * time_step,
-                   acceleration);
-    };
-    const auto compute_residual = [&]() {
-      residual = load;
-      apply_stiffness(displacement, tmp);
-      residual -= tmp;
-      apply_mass(acceleration, tmp);
-      residual -= tmp;
-      compute_damping_force(velocity, cv);
-      residual -= cv;
-      if (fault)
-        {
-          tmp = 0;
-          assemble_contact(tmp, false, 1);
-          residual -= tmp;
-        }
-    };
-
-    // The predictor: the old motion carried on over the step.
-    std::unique_ptr<VectorType> predicted;
-    if (newton_predictor != "old displacement")
-      {
-        predicted = std::make_unique<VectorType>(old_v);
-        *predicted *= time_step;
-        if (newton_predictor == "constant acceleration")
-          predicted->add(0.5 * time_step * time_step, old_a);
-      }
-    solve_step(
-      old_u, update_rates, compute_residual, residual, predicted.get());
-    finish_step(old_u, load, residual, cv);
   }
 
 

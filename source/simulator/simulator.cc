@@ -201,10 +201,9 @@ namespace rupture
         // carry over; the body starts from rest (up to the boundary
         // velocities) with the acceleration of its current forces.
         const double start = time;
-        current_scheme     = time_parameters.scheme;
         pcout << "*** Dynamic phase (" << time_parameters.scheme_name()
               << ") from t = " << std::setprecision(6) << start << " s\n";
-        prepare_phase(current_scheme,
+        prepare_phase(time_parameters.scheme,
                       time_parameters.time_step,
                       time_parameters.end_time);
         dynamic_start = start;
@@ -216,7 +215,7 @@ namespace rupture
           }
         receivers->clear();
         receivers->record(displacement, velocity, 0);
-        if (current_scheme != TimeIntegration::Scheme::quasi_static)
+        if (current_scheme() != TimeIntegration::Scheme::quasi_static)
           {
             velocity = 0;
             set_kinematic_velocity(velocity);
@@ -271,7 +270,8 @@ namespace rupture
     // The implicit and quasi-static schemes close the budget to round-off
     // (trapezoidal rule); central difference only to O(dt^2).
     const double tolerance =
-      (current_scheme == TimeIntegration::Scheme::explicit_central_difference) ?
+      (current_scheme() ==
+       TimeIntegration::Scheme::explicit_central_difference) ?
         1e-2 :
         1e-8;
     pcout << "   Energy balance error below " << tolerance
@@ -321,8 +321,6 @@ namespace rupture
       static_cast<unsigned int>(std::ceil(duration / time_step - 1e-9));
     pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
           << n_steps << " steps to t = " << end_time << " s\n";
-    substep_depth           = 0;
-    steps_without_cut       = 0;
     const double loop_start = MPI_Wtime();
     // The time loop's wall time, for the performance summary, however the
     // phase ends.
@@ -347,18 +345,7 @@ namespace rupture
         if (fault)
           fault->set_time(time);
 
-        switch (current_scheme)
-          {
-            case TimeIntegration::Scheme::implicit_newmark:
-              implicit_step();
-              break;
-            case TimeIntegration::Scheme::explicit_central_difference:
-              explicit_step();
-              break;
-            case TimeIntegration::Scheme::quasi_static:
-              quasi_static_step();
-              break;
-          }
+        integrator->step();
         check_finite(displacement, "displacement");
         {
           // The displacement may still be finite when the energies computed
@@ -406,7 +393,7 @@ namespace rupture
                 pcout << "  [" << std::fixed << std::setprecision(0)
                       << 100. * i / n_steps << "%, " << std::setprecision(1)
                       << left << " s left]";
-                if (current_scheme !=
+                if (current_scheme() !=
                     TimeIntegration::Scheme::explicit_central_difference)
                   pcout << "\n    Linear solver: " << last_linear_iterations
                         << " iterations";
@@ -436,7 +423,7 @@ namespace rupture
     // few per cent even there while the run is stable (doc/stability.md);
     // an error of half of all the energy in play is a blow-up that has not
     // overflowed yet.
-    if (current_scheme !=
+    if (current_scheme() !=
           TimeIntegration::Scheme::explicit_central_difference ||
         !(time_step > stable_time_step))
       return;

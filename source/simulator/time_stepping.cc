@@ -104,7 +104,7 @@ namespace rupture
                                         VectorType       &y) const
   {
     y = 0;
-    if (current_scheme == TimeIntegration::Scheme::quasi_static)
+    if (current_scheme() == TimeIntegration::Scheme::quasi_static)
       return;
     VectorType tmp(v);
     if (rayleigh_alpha != 0)
@@ -247,7 +247,8 @@ namespace rupture
     message << "At step " << step << " (t = " << time << " s) the " << what
             << " is no longer finite, " << locate_largest(v)
             << "; the run was stopped before writing it. ";
-    if (current_scheme == TimeIntegration::Scheme::explicit_central_difference)
+    if (current_scheme() ==
+        TimeIntegration::Scheme::explicit_central_difference)
       message << "The explicit scheme blew up: its time step " << time_step
               << " s against the stable limit " << stable_time_step
               << " s. Reduce <Time integration/Time step>.";
@@ -384,12 +385,12 @@ namespace rupture
         r -= tmp;
         compute_damping_force(velocity, tmp);
         r -= tmp;
-        assemble_split_node_force(velocity, r, true, contact_force);
+        initial_split_node_force(r, contact_force);
       }
     else if (fault)
       assemble_contact(contact_force, false, 1);
 
-    if (current_scheme == TimeIntegration::Scheme::quasi_static)
+    if (current_scheme() == TimeIntegration::Scheme::quasi_static)
       {
         velocity     = 0;
         acceleration = 0;
@@ -406,7 +407,7 @@ namespace rupture
     compute_damping_force(velocity, damping_force);
     VectorType ma(load);
     ma = 0;
-    if (current_scheme != TimeIntegration::Scheme::quasi_static)
+    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       apply_mass(acceleration, ma);
     // The force the body is in balance with at the start. A quasi-static
     // run follows an equilibrium path, on which the loads grow from the
@@ -416,14 +417,14 @@ namespace rupture
       if (hanging_constraints.is_constrained(i))
         applied_force(i) = 0;
       else if (increment_constraints.is_constrained(i) ||
-               current_scheme == TimeIntegration::Scheme::quasi_static)
+               current_scheme() == TimeIntegration::Scheme::quasi_static)
         applied_force(i) = ku(i) + ma(i) + damping_force(i) + contact_force(i);
     applied_force.compress(VectorOperation::insert);
 
     hanging_constraints.set_zero(ku);
     strain_energy = 0.5 * (displacement * ku);
     VectorType mv(load);
-    if (current_scheme != TimeIntegration::Scheme::quasi_static)
+    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(velocity, mv);
         hanging_constraints.set_zero(mv);
@@ -472,7 +473,7 @@ namespace rupture
     applied_force = force;
     damping_force = new_damping_force;
     if (has_absorbing &&
-        current_scheme != TimeIntegration::Scheme::quasi_static)
+        current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         // The dashpots' share, from the velocities at the ends of the step
         // (the schemes' damping force may use a predicted velocity
@@ -491,7 +492,7 @@ namespace rupture
       apply_stiffness(displacement, tmp);
     hanging_constraints.set_zero(tmp);
     strain_energy = 0.5 * (displacement * tmp);
-    if (current_scheme != TimeIntegration::Scheme::quasi_static)
+    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(velocity, tmp);
         hanging_constraints.set_zero(tmp);
@@ -503,73 +504,26 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::assemble_split_node_force(const VectorType &predicted_v,
-                                            const VectorType &residual,
-                                            const bool        initial,
-                                            VectorType       &force)
+  Simulator<dim>::initial_split_node_force(const VectorType &residual,
+                                           VectorType       &force)
   {
     TimerOutput::Scope t(timer, "Fault split nodes");
     // The initial acceleration uses the lumped mass alone (see
-    // compute_acceleration()), a step the effective diagonal.
-    if (!initial)
-      fault->assemble_split_node(displacement,
-                                 predicted_v,
-                                 residual,
-                                 explicit_inverse_diagonal,
-                                 time_step,
-                                 time_parameters.gamma,
-                                 force);
-    else
-      {
-        VectorType inverse(residual);
-        for (const auto i : locally_owned_dofs)
-          inverse(i) =
-            (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
-              1. / lumped_mass(i) :
-              0.;
-        inverse.compress(VectorOperation::insert);
-        fault->assemble_split_node(displacement,
-                                   predicted_v,
-                                   residual,
-                                   inverse,
-                                   time_step,
-                                   time_parameters.gamma,
-                                   force);
-      }
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::quasi_static_step()
-  {
-    TimerOutput::Scope t(timer, "Quasi-static step");
-    const VectorType   old_u(displacement);
-    VectorType load(displacement), residual(displacement), tmp(displacement),
-      zero(displacement);
-    assemble_load_vector(time, load);
-
-    const auto compute_residual = [&]() {
-      residual = load;
-      apply_stiffness(displacement, tmp);
-      residual -= tmp;
-      if (fault)
-        {
-          tmp = 0;
-          assemble_contact(tmp, false, 1);
-          residual -= tmp;
-        }
-    };
-    solve_step(
-      old_u, []() {}, compute_residual, residual);
-
-    // The rate of the loading, for output; no inertia.
-    velocity = displacement;
-    velocity -= old_u;
-    velocity /= time_step;
-    zero = 0;
-    finish_step(old_u, load, residual, zero);
+    // compute_acceleration()).
+    VectorType inverse(residual);
+    for (const auto i : locally_owned_dofs)
+      inverse(i) =
+        (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
+          1. / lumped_mass(i) :
+          0.;
+    inverse.compress(VectorOperation::insert);
+    fault->assemble_split_node(displacement,
+                               velocity,
+                               residual,
+                               inverse,
+                               time_step,
+                               time_parameters.gamma,
+                               force);
   }
 
 

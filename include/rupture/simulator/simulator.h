@@ -16,6 +16,7 @@
 #include <rupture/scene/boundary_conditions.h>
 #include <rupture/scene/scene.h>
 #include <rupture/solver/linear_solver.h>
+#include <rupture/time_integration/interface.h>
 #include <rupture/time_integration/newmark.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -42,6 +43,16 @@ namespace rupture
 {
   using namespace dealii;
 
+  namespace TimeIntegration
+  {
+    template <int dim>
+    class CentralDifference;
+    template <int dim>
+    class ImplicitNewmark;
+    template <int dim>
+    class QuasiStatic;
+  } // namespace TimeIntegration
+
   /**
    * Owns the distributed mesh, the displacement field and the state of a
    * run, and drives the time loop. Physics (materials, scene, boundary
@@ -54,8 +65,12 @@ namespace rupture
    * can later give each side its own nodes without a change here.
    *
    * The work is split over several files, as in ASPECT: simulator.cc (set
-   * up and time loop), assembly.cc (matrices and load vectors) and
-   * time_stepping.cc (the three schemes and the energy budget).
+   * up and time loop), assembly.cc (matrices and load vectors),
+   * time_stepping.cc (initial state, forces and the energy budget) and
+   * newton.cc (the nonlinear solve of a step). The time integrators
+   * (TimeIntegration::Interface, one class per scheme) step the state
+   * with these; like ASPECT's SimulatorAccess they are friends of this
+   * class.
    */
   template <int dim>
   class Simulator
@@ -76,6 +91,10 @@ namespace rupture
     run();
 
   private:
+    friend class TimeIntegration::CentralDifference<dim>;
+    friend class TimeIntegration::ImplicitNewmark<dim>;
+    friend class TimeIntegration::QuasiStatic<dim>;
+
     // --- set up (simulator.cc) ---
     void
     parse_parameters(ParameterHandler &prm);
@@ -119,9 +138,10 @@ namespace rupture
     void
     assemble_physics_matrices();
     /**
-     * Set the time step of a phase of the run and build what its scheme
-     * needs: the effective stiffness and its preconditioner (implicit,
-     * quasi-static), or the stability check and the diagonal (explicit).
+     * Set the time step of a phase of the run, create its time integrator
+     * and let it build what its steps need: the effective stiffness and
+     * its preconditioner (implicit, quasi-static), or the diagonal
+     * (explicit, after the stability check here).
      */
     void
     prepare_phase(const TimeIntegration::Scheme scheme,
@@ -202,11 +222,6 @@ namespace rupture
     // --- time stepping (time_stepping.cc) ---
     void
     initialize_state();
-    void
-    implicit_step();
-    /// One implicit Newmark step of size time_step ending at time.
-    void
-    implicit_substep();
     /// Newton's method did not converge (the step may be cut).
     struct NewtonFailure : public std::runtime_error
     {
@@ -217,12 +232,6 @@ namespace rupture
       /// A few words for the screen when the step is cut.
       std::string reason;
     };
-    /// One step of central differences (explicit_step.cc).
-    void
-    explicit_step();
-    /// The diagonal and the work vectors of the explicit step.
-    void
-    prepare_explicit_work();
     /// The load vector at @p time: the constant part, plus the body force
     /// if there is one.
     const VectorType &
@@ -230,8 +239,6 @@ namespace rupture
     /// Set the hanging and welded DoFs of @p v from their constraints.
     void
     distribute_hanging(VectorType &v) const;
-    void
-    quasi_static_step();
     /**
      * Solve for the displacement at the new time: one linear solve without
      * a fault, Newton's method (the paper's Fig. 6) with one. @p update_rates
@@ -256,16 +263,12 @@ namespace rupture
                      const bool   with_tangent,
                      const double sign);
     /**
-     * The fault forces of the traction-at-split-node method for the
-     * predicted velocity @p predicted_v and the residual @p residual of the
-     * other forces (explicit scheme); at the @p initial state with the
-     * lumped mass instead of the step's effective diagonal.
+     * The fault forces of the traction-at-split-node method in the initial
+     * state, for the residual @p residual of the other forces, with the
+     * lumped mass (the explicit steps use their effective diagonal).
      */
     void
-    assemble_split_node_force(const VectorType &predicted_v,
-                              const VectorType &residual,
-                              const bool        initial,
-                              VectorType       &force);
+    initial_split_node_force(const VectorType &residual, VectorType &force);
     /**
      * After the solve of a step: accept the fault state and update the
      * energy budget.
@@ -386,8 +389,14 @@ namespace rupture
     typename Output::VolumeOutput<dim>::Compression output_compression;
     unsigned int                                    screen_interval;
     TimeIntegration::Parameters                     time_parameters;
-    /// The scheme of the phase being run.
-    TimeIntegration::Scheme              current_scheme;
+    /// The time integrator of the phase being run.
+    std::unique_ptr<TimeIntegration::Interface<dim>> integrator;
+    /// Its scheme.
+    TimeIntegration::Scheme
+    current_scheme() const
+    {
+      return integrator->scheme();
+    }
     std::unique_ptr<FunctionParser<dim>> body_force;
     bool                                 has_body_force;
     std::unique_ptr<FunctionParser<dim>> initial_displacement;
@@ -434,7 +443,6 @@ namespace rupture
     std::vector<std::vector<double>> null_space;
     VectorType                       lumped_mass;
     VectorType                       absorbing_damping;
-    VectorType                       explicit_inverse_diagonal;
     /// The factors of the effective stiffness of assemble_system_matrix().
     struct SystemFactors
     {
@@ -448,24 +456,8 @@ namespace rupture
       free_dofs;
     /// Work vector of apply_system().
     mutable VectorType system_work;
-    /// Work vectors of the explicit step, kept between steps: the
-    /// displacement at the start of the step, K u, the residual and the
-    /// fault's forces. And the load of the step if it varies.
-    VectorType old_displacement, stiffness_force, step_residual, fault_force,
-      step_load;
-    /// The owned entries the split-node fault force touches.
-    std::vector<unsigned int> fault_entries;
-    /// What each locally owned DoF is, for the explicit step's energy
-    /// budget.
-    enum DofKind : unsigned char
-    {
-      free,
-      /// Tied to others: a hanging or welded node.
-      tied,
-      /// Held by a kinematic boundary condition.
-      kinematic
-    };
-    std::vector<unsigned char> dof_kind;
+    /// The load of the step if it varies (current_load()).
+    VectorType step_load;
     /// Sets the tied DoFs of a vector.
     ConstraintDistributor hanging_distributor;
     VectorType            constant_load;
@@ -531,12 +523,8 @@ namespace rupture
     /// Stick crossings limited in the current (or last) Newton solve.
     unsigned int stick_crossings_limited = 0;
     /// True while a step is retried without the limit.
-    bool stick_crossing_limit_suspended = false;
-    /// Implicit steps are taken as 2^substep_depth sub-steps: raised after
-    /// a step cut, lowered again after two steps without one.
-    unsigned int substep_depth     = 0;
-    unsigned int steps_without_cut = 0;
-    double       wall_time_start;
+    bool   stick_crossing_limit_suspended = false;
+    double wall_time_start;
     /// Wall time spent in the time loops (s), and their number of steps.
     double time_loop_seconds = 0;
     /// Resident memory (bytes, all ranks) after each set-up stage.

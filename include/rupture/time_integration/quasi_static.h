@@ -1,0 +1,35 @@
+#ifndef rupture_time_integration_quasi_static_h
+#define rupture_time_integration_quasi_static_h
+
+#include <rupture/time_integration/interface.h>
+
+namespace rupture
+{
+  namespace TimeIntegration
+  {
+    /**
+     * Quasi-static steps without inertia: K u + F_contact(u) = f at each
+     * time (the paper's loading phase), solved with Newton's method when a
+     * penalty fault is present. The velocity written is the rate of the
+     * loading, (u - u_old)/dt.
+     */
+    template <int dim>
+    class QuasiStatic : public Interface<dim>
+    {
+    public:
+      using Interface<dim>::Interface;
+
+      Scheme
+      scheme() const override;
+      void
+      prepare() override;
+      void
+      step() override;
+
+    private:
+      using Interface<dim>::simulator;
+    };
+  } // namespace TimeIntegration
+} // namespace rupture
+
+#endif

@@ -1,0 +1,211 @@
+#include <rupture/simulator/simulator.h>
+#include <rupture/time_integration/central_difference.h>
+
+namespace rupture
+{
+  namespace TimeIntegration
+  {
+    template <int dim>
+    Scheme
+    CentralDifference<dim>::scheme() const
+    {
+      return Scheme::explicit_central_difference;
+    }
+
+
+
+    template <int dim>
+    void
+    CentralDifference<dim>::prepare()
+    {
+      Simulator<dim> &s = simulator;
+      // (M (1 + gamma dt alpha) + gamma dt C_abs) a = r is diagonal.
+      const double g = s.time_parameters.gamma * s.time_step;
+      for (VectorType *v : {&inverse_diagonal,
+                            &old_displacement,
+                            &stiffness_force,
+                            &residual,
+                            &fault_force})
+        v->reinit(s.locally_owned_dofs, s.communicator);
+      dof_kind.assign(s.locally_owned_dofs.n_elements(), DofKind::free);
+      unsigned int k = 0;
+      for (const auto i : s.locally_owned_dofs)
+        {
+          double d = s.lumped_mass(i) * (1 + g * s.rayleigh_alpha);
+          if (s.has_absorbing)
+            d += g * s.absorbing_damping(i);
+          inverse_diagonal(i) =
+            (s.increment_constraints.is_constrained(i) || d == 0) ? 0. : 1. / d;
+          if (s.hanging_constraints.is_constrained(i))
+            dof_kind[k] = DofKind::tied;
+          else if (s.increment_constraints.is_constrained(i))
+            dof_kind[k] = DofKind::kinematic;
+          ++k;
+        }
+      inverse_diagonal.compress(VectorOperation::insert);
+      // The split-node force is zero away from the fault's entries, and the
+      // step touches only those.
+      fault_entries.clear();
+      if (s.fault)
+        fault_entries = s.fault->split_node_entries();
+    }
+
+
+
+    template <int dim>
+    void
+    CentralDifference<dim>::step()
+    {
+      Simulator<dim>    &s = simulator;
+      TimerOutput::Scope t(s.timer, "Explicit step");
+      const double       gamma = s.time_parameters.gamma;
+      const double       dt    = s.time_step;
+      const double       alpha = s.rayleigh_alpha;
+      const double       beta  = s.rayleigh_beta;
+      const VectorType  &load  = s.current_load(s.time);
+      const unsigned int n     = dof_kind.size();
+
+      // The owned arrays: every update below is one fused pass over them.
+      const auto local = [](const VectorType &v) -> double * {
+        return const_cast<double *>(v.trilinos_vector()[0]);
+      };
+      double *const u = local(s.displacement), *const v = local(s.velocity),
+                    *const a  = local(s.acceleration),
+                    *const u0 = local(old_displacement),
+                    *const r = local(residual), *const ff = local(fault_force);
+      const double *const m = local(s.lumped_mass);
+      const double *const c_abs =
+        s.has_absorbing ? local(s.absorbing_damping) : nullptr;
+      const double *const f     = local(load);
+      const double *const inv_d = local(inverse_diagonal);
+
+      // Predictors: u = u + dt v + dt^2/2 a, v~ = v + (1 - gamma) dt a.
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          u0[i] = u[i];
+          u[i] += dt * v[i] + 0.5 * dt * dt * a[i];
+          v[i] += (1 - gamma) * dt * a[i];
+        }
+      for (const auto &k : s.kinematic_dofs)
+        s.displacement(k.dof) = old_displacement(k.dof) +
+                                s.kinematic_velocity(k, s.time - 0.5 * dt) * dt;
+      s.displacement.compress(VectorOperation::insert);
+      s.set_kinematic_velocity(s.velocity);
+      s.distribute_hanging(s.displacement);
+
+      // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
+      //   - alpha M v~ - C_abs v~ - F_fault; the stiffness damping uses the
+      //   predictor.
+      // Without stiffness damping K u is read where the matrix-free
+      // operator left it (no copy).
+      const double *ku =
+        (beta == 0) ? s.apply_stiffness_in_place(s.displacement) : nullptr;
+      if (!ku)
+        {
+          if (beta == 0)
+            s.apply_stiffness(s.displacement, stiffness_force);
+          else
+            {
+              residual = s.displacement;
+              residual.add(beta, s.velocity);
+              s.apply_stiffness(residual, stiffness_force);
+            }
+          ku = local(stiffness_force);
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        r[i] =
+          f[i] - ku[i] - alpha * m[i] * v[i] - (c_abs ? c_abs[i] * v[i] : 0.);
+      // The fault's force, nonzero only at its entries: r - F_fault there.
+      if (s.fault)
+        {
+          for (const unsigned int i : fault_entries)
+            ff[i] = 0;
+          {
+            TimerOutput::Scope t(s.timer, "Fault split nodes");
+            s.fault->assemble_split_node(s.displacement,
+                                         s.velocity,
+                                         residual,
+                                         inverse_diagonal,
+                                         dt,
+                                         gamma,
+                                         fault_force);
+          }
+          for (const unsigned int i : fault_entries)
+            r[i] -= ff[i];
+        }
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          a[i] = r[i] * inv_d[i];
+          v[i] += gamma * dt * a[i];
+        }
+      s.distribute_hanging(s.acceleration);
+      s.distribute_hanging(s.velocity);
+
+      // The energy budget of the step (see Simulator::update_energy(), of
+      // which this is the fused form): with stiffness damping K u and K v
+      // are products of their own, without it K u is known.
+      if (beta != 0)
+        {
+          s.apply_stiffness(s.velocity, residual);
+          s.apply_stiffness(s.displacement, stiffness_force);
+          ku = local(stiffness_force);
+        }
+      const double *const kv      = (beta != 0) ? r : nullptr;
+      double *const       applied = local(s.applied_force);
+      double *const       damping = local(s.damping_force);
+      double *const       absorbing =
+        s.has_absorbing ? local(s.absorbing_force) : nullptr;
+      double *const contact = local(s.contact_force);
+      // work of the loads, damping, absorbing boundaries, fault; strain and
+      // kinetic energy (the fault's work at its entries only, where its
+      // force is nonzero, in the same order)
+      double sums[6] = {0, 0, 0, 0, 0, 0};
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          if (dof_kind[i] == DofKind::tied)
+            continue;
+          const double increment = u[i] - u0[i];
+          const double c = alpha * m[i] * v[i] + (kv ? beta * kv[i] : 0.) +
+                           (c_abs ? c_abs[i] * v[i] : 0.);
+          // Loads on free DoFs, reactions on kinematically held ones.
+          const double force = (dof_kind[i] == DofKind::kinematic) ?
+                                 ku[i] + m[i] * a[i] + c + ff[i] :
+                                 f[i];
+          sums[0] += (force + applied[i]) * increment;
+          applied[i] = force;
+          sums[1] += (c + damping[i]) * increment;
+          damping[i] = c;
+          if (absorbing)
+            {
+              const double fa = c_abs[i] * v[i];
+              sums[2] += (fa + absorbing[i]) * increment;
+              absorbing[i] = fa;
+            }
+          sums[4] += u[i] * ku[i];
+          sums[5] += m[i] * v[i] * v[i];
+        }
+      for (const unsigned int i : fault_entries)
+        if (dof_kind[i] != DofKind::tied)
+          {
+            sums[3] += (ff[i] + contact[i]) * (u[i] - u0[i]);
+            contact[i] = ff[i];
+          }
+      dealii::Utilities::MPI::sum(ArrayView<const double>(sums, 6),
+                                  s.communicator,
+                                  ArrayView<double>(sums, 6));
+      s.external_work += 0.5 * sums[0];
+      s.damping_dissipation += 0.5 * sums[1];
+      s.absorbed_energy += 0.5 * sums[2];
+      s.fault_work += 0.5 * sums[3];
+      s.strain_energy  = 0.5 * sums[4];
+      s.kinetic_energy = 0.5 * sums[5];
+      if (s.fault)
+        s.fault->commit(dt, s.time);
+    }
+
+
+
+    template class CentralDifference<2>;
+    template class CentralDifference<3>;
+  } // namespace TimeIntegration
+} // namespace rupture

@@ -1,0 +1,215 @@
+#include <rupture/simulator/simulator.h>
+#include <rupture/time_integration/implicit_newmark.h>
+
+#include <functional>
+
+namespace rupture
+{
+  namespace TimeIntegration
+  {
+    template <int dim>
+    Scheme
+    ImplicitNewmark<dim>::scheme() const
+    {
+      return Scheme::implicit_newmark;
+    }
+
+
+
+    template <int dim>
+    void
+    ImplicitNewmark<dim>::set_time_step(const double h)
+    {
+      Simulator<dim> &s = simulator;
+      s.time_step       = h;
+      // Effective stiffness of eq. 14: K + a0 M + a1 C, with
+      // C = alpha M + beta K + C_absorbing.
+      const NewmarkCoefficients c(s.time_parameters.beta,
+                                  s.time_parameters.gamma,
+                                  h);
+      s.assemble_system_matrix(1 + c.a1 * s.rayleigh_beta,
+                               c.a0 + c.a1 * s.rayleigh_alpha,
+                               c.a1);
+    }
+
+
+
+    template <int dim>
+    void
+    ImplicitNewmark<dim>::prepare()
+    {
+      substep_depth     = 0;
+      steps_without_cut = 0;
+      set_time_step(simulator.time_step);
+    }
+
+
+
+    template <int dim>
+    void
+    ImplicitNewmark<dim>::step()
+    {
+      // Try the step; if Newton's method fails, redo it as two half steps,
+      // recursively, up to <Solver/Maximum step cuts> times. The fault
+      // state and the energy budget change only when a (sub)step has
+      // converged. After a cut the following steps start from the sub-step
+      // size that converged (a step that failed at full size tends to fail
+      // again in the next one), and double it again after two steps
+      // without a cut.
+      using VectorType       = typename Simulator<dim>::VectorType;
+      using NewtonFailure    = typename Simulator<dim>::NewtonFailure;
+      Simulator<dim>    &s   = simulator;
+      const double       end = s.time, dt = s.time_step;
+      const unsigned int cuts    = s.max_step_cuts;
+      unsigned int       deepest = 0;
+      bool               cut     = false;
+      std::function<void(double, double, unsigned int)> attempt =
+        [&](const double t_start, const double h, const unsigned int depth) {
+          const VectorType u(s.displacement), v(s.velocity), a(s.acceleration);
+          if (h != s.time_step)
+            set_time_step(h);
+          s.time = t_start + h;
+          if (s.fault)
+            s.fault->set_time(s.time);
+          // Give up early on a stalled Newton iteration only where the
+          // step can still be cut; at the last level it iterates on.
+          s.newton_may_cut = (depth < cuts);
+          try
+            {
+              try
+                {
+                  substep();
+                }
+              catch (const NewtonFailure &failure)
+                {
+                  // The stick-crossing limit can keep a node from the far
+                  // side of its stick region where its solution lies (seen
+                  // with time steps 100-1000 times the explicit limit): try
+                  // the step once more without it before cutting it.
+                  if (s.stick_crossings_limited == 0)
+                    throw;
+                  s.displacement = u;
+                  s.velocity     = v;
+                  s.acceleration = a;
+                  s.pcout << "    Newton failed with dt = " << h << " s ("
+                          << failure.reason
+                          << ") after limiting stick crossings: the step is "
+                             "tried again without the limit\n";
+                  // (If it fails again, the catch below ends the
+                  // suspension.)
+                  s.stick_crossing_limit_suspended = true;
+                  substep();
+                  s.stick_crossing_limit_suspended = false;
+                }
+              s.newton_may_cut = false;
+              deepest          = std::max(deepest, depth);
+            }
+          catch (const NewtonFailure &failure)
+            {
+              s.newton_may_cut                 = false;
+              s.stick_crossing_limit_suspended = false;
+              if (depth == cuts)
+                throw NewtonFailure(std::string(failure.what()) +
+                                      " The step was cut " +
+                                      std::to_string(depth) +
+                                      " times (<Solver/Maximum step cuts>).",
+                                    failure.reason);
+              s.displacement = u;
+              s.velocity     = v;
+              s.acceleration = a;
+              s.pcout << "    Newton failed with dt = " << h << " s ("
+                      << failure.reason << "): the step is cut in half\n";
+              ++s.n_step_cuts;
+              cut = true;
+              attempt(t_start, h / 2, depth + 1);
+              attempt(t_start + h / 2, h / 2, depth + 1);
+            }
+        };
+      const unsigned int start_depth = std::min(substep_depth, cuts);
+      const unsigned int n_substeps  = 1u << start_depth;
+      if (n_substeps > 1)
+        s.pcout << "    taken as " << n_substeps << " sub-steps of "
+                << dt / n_substeps << " s after an earlier step cut\n";
+      for (unsigned int i = 0; i < n_substeps; ++i)
+        attempt(end - dt + i * (dt / n_substeps), dt / n_substeps, start_depth);
+      if (cut)
+        {
+          substep_depth     = deepest;
+          steps_without_cut = 0;
+        }
+      else if (substep_depth > 0 && ++steps_without_cut >= 2)
+        {
+          --substep_depth;
+          steps_without_cut = 0;
+        }
+      if (s.time_step != dt)
+        set_time_step(dt);
+      s.time = end;
+    }
+
+
+
+    template <int dim>
+    void
+    ImplicitNewmark<dim>::substep()
+    {
+      using VectorType            = typename Simulator<dim>::VectorType;
+      Simulator<dim>           &s = simulator;
+      TimerOutput::Scope        t(s.timer, "Implicit step");
+      const double              dt    = s.time_step;
+      const double              gamma = s.time_parameters.gamma;
+      const NewmarkCoefficients a(s.time_parameters.beta, gamma, dt);
+
+      const VectorType old_u(s.displacement), old_v(s.velocity),
+        old_a(s.acceleration);
+      VectorType load(s.displacement), residual(s.displacement),
+        tmp(s.displacement), cv(s.displacement);
+      s.assemble_load_vector(s.time, load);
+
+      // New velocity and acceleration as functions of the new displacement
+      // (Newmark, eq. 12), and the residual f - M a - C v - K u -
+      // F_contact.
+      const auto update_rates = [&]() {
+        s.acceleration = s.displacement;
+        s.acceleration -= old_u;
+        s.acceleration *= a.a0;
+        s.acceleration.add(-a.a2, old_v, -a.a3, old_a);
+        s.velocity = old_v;
+        s.velocity.add((1 - gamma) * dt, old_a, gamma * dt, s.acceleration);
+      };
+      const auto compute_residual = [&]() {
+        residual = load;
+        s.apply_stiffness(s.displacement, tmp);
+        residual -= tmp;
+        s.apply_mass(s.acceleration, tmp);
+        residual -= tmp;
+        s.compute_damping_force(s.velocity, cv);
+        residual -= cv;
+        if (s.fault)
+          {
+            tmp = 0;
+            s.assemble_contact(tmp, false, 1);
+            residual -= tmp;
+          }
+      };
+
+      // The predictor: the old motion carried on over the step.
+      std::unique_ptr<VectorType> predicted;
+      if (s.newton_predictor != "old displacement")
+        {
+          predicted = std::make_unique<VectorType>(old_v);
+          *predicted *= dt;
+          if (s.newton_predictor == "constant acceleration")
+            predicted->add(0.5 * dt * dt, old_a);
+        }
+      s.solve_step(
+        old_u, update_rates, compute_residual, residual, predicted.get());
+      s.finish_step(old_u, load, residual, cv);
+    }
+
+
+
+    template class ImplicitNewmark<2>;
+    template class ImplicitNewmark<3>;
+  } // namespace TimeIntegration
+} // namespace rupture
