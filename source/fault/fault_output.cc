@@ -280,10 +280,24 @@ namespace rupture
 
     template <int dim>
     void
+    FaultOutput<dim>::start_loading_phase()
+    {
+      file_prefix = "loading";
+      pvd_name    = "fault-loading.pvd";
+      records.clear();
+    }
+
+
+
+    template <int dim>
+    void
     FaultOutput<dim>::start_dynamic_phase()
     {
       for (auto &s : stations)
         s.rows.clear();
+      file_prefix = "fault";
+      pvd_name    = "fault.pvd";
+      records.clear();
     }
 
 
@@ -443,13 +457,13 @@ namespace rupture
       out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
 
       std::ostringstream name;
-      name << "fault/fault_" << std::setw(5) << std::setfill('0') << step
-           << ".vtu";
+      name << "fault/" << file_prefix << "_" << std::setw(5)
+           << std::setfill('0') << step << ".vtu";
       directory.write(name.str(), out.str());
       this->records.emplace_back(time, name.str());
       std::ostringstream pvd;
       DataOutBase::write_pvd_record(pvd, this->records);
-      directory.write("fault.pvd", pvd.str());
+      directory.write(pvd_name, pvd.str());
     }
 
 

@@ -292,9 +292,10 @@ namespace rupture
 
       std::string step_name = std::to_string(step);
       step_name.insert(0, std::max<int>(0, 5 - int(step_name.size())), '0');
-      const std::string pvtu       = "solution_" + step_name + ".pvtu";
+      const std::string pvtu       = file_prefix + "_" + step_name + ".pvtu";
       const auto        piece_name = [&](const unsigned int piece) {
-        return "solution_" + step_name + "." + std::to_string(piece) + ".vtu";
+        return file_prefix + "_" + step_name + "." + std::to_string(piece) +
+               ".vtu";
       };
 
       const bool          compress       = (compression != Compression::none);
@@ -409,8 +410,20 @@ namespace rupture
         {
           std::ostringstream pvd;
           DataOutBase::write_pvd_record(pvd, records);
-          directory.write("solution.pvd", pvd.str());
+          directory.write(pvd_name, pvd.str());
         }
+    }
+
+
+
+    template <int dim>
+    void
+    VolumeOutput<dim>::start_series(const std::string &file_prefix,
+                                    const std::string &pvd_name)
+    {
+      this->file_prefix = file_prefix;
+      this->pvd_name    = pvd_name;
+      records.clear();
     }
 
 

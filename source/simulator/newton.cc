@@ -209,7 +209,7 @@ namespace rupture
                 const Fault::Statistics f = fault->statistics();
                 std::ostringstream      message;
                 message << "Newton's method did not converge in step " << step
-                        << " (t = " << time << " s): ";
+                        << " (t = " << phase_time << " s): ";
                 if (stalled)
                   {
                     std::vector<unsigned long> recent(signatures.end() - window,

@@ -181,6 +181,18 @@ namespace rupture
         for (const std::string which : {"Minimum", "Maximum"})
           columns.push_back(which + " of the friction state " + name +
                             " over the fault");
+    // With a loading phase the time column restarts at the start of the
+    // dynamic phase: these say which phase a row is in, and its absolute
+    // time.
+    if (time_parameters.loading_phase)
+      {
+        columns.emplace_back("Phase (0: loading, 1: dynamic)");
+        columns.emplace_back("Time since the start of the run (s)");
+        // The loading phase's snapshots are a time series of their own.
+        volume_output->start_series("loading", "solution-loading.pvd");
+        if (fault)
+          fault_output->start_loading_phase();
+      }
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
     if (fault)
@@ -206,7 +218,12 @@ namespace rupture
         prepare_phase(time_parameters.scheme,
                       time_parameters.time_step,
                       time_parameters.end_time);
-        dynamic_start = start;
+        dynamic_start    = start;
+        phase_time       = 0;
+        in_dynamic_phase = true;
+        volume_output->start_series("solution", "solution.pvd");
+        next_output_time       = 0;
+        next_fault_output_time = 0;
         if (fault)
           {
             fault->start_dynamic_phase(start);
@@ -226,6 +243,9 @@ namespace rupture
             if (has_absorbing)
               compute_absorbing_force(velocity, absorbing_force);
           }
+        // The first snapshots of the dynamic phase's time series: its
+        // initial state, at its time 0.
+        write_step_output(true);
         run_phase(time_parameters.end_time, false);
       }
     else
@@ -241,7 +261,11 @@ namespace rupture
 
     const auto &last = statistics.last_row();
     pcout << std::scientific << std::setprecision(6)
-          << "Final state at t = " << time << " s:\n"
+          << "Final state at t = " << phase_time << " s";
+    if (time_parameters.loading_phase)
+      pcout << " of the dynamic phase (" << time
+            << " s since the start of the run)";
+    pcout << ":\n"
           << "   Initial energy       " << initial_energy << " J\n"
           << "   Kinetic energy       " << last[4] << " J\n"
           << "   Strain energy        " << last[5] << " J\n"
@@ -320,7 +344,8 @@ namespace rupture
     const unsigned int n_steps =
       static_cast<unsigned int>(std::ceil(duration / time_step - 1e-9));
     pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
-          << n_steps << " steps to t = " << end_time << " s\n";
+          << n_steps << " steps to t = " << (start - dynamic_start) + duration
+          << " s\n";
     const double loop_start = MPI_Wtime();
     // The time loop's wall time, for the performance summary, however the
     // phase ends.
@@ -340,7 +365,7 @@ namespace rupture
         time = (i == n_steps) ? end_time : start + i * time_step;
         // The time since the start of the dynamic phase, without the
         // round-off of the absolute time after a long loading phase.
-        const double phase_time =
+        phase_time =
           (start - dynamic_start) + ((i == n_steps) ? duration : i * time_step);
         if (fault)
           fault->set_time(time);
@@ -369,10 +394,9 @@ namespace rupture
         if (step % screen_interval == 0 || i == n_steps || stop)
           {
             pcout << "*** Step " << step << ": t = " << std::scientific
-                  << std::setprecision(4) << time;
-            pcout << " s";
+                  << std::setprecision(4) << phase_time << " s";
             if (dynamic_start != 0)
-              pcout << " (dynamic phase t = " << phase_time << " s)";
+              pcout << " (" << time << " s since the start of the run)";
             pcout << ", dt = " << std::setprecision(2) << time_step << " s";
             if (fault)
               {
@@ -440,7 +464,7 @@ namespace rupture
     // (Collective: every rank has the same energies.)
     const std::string  where = locate_largest(displacement);
     std::ostringstream message;
-    message << "At step " << step << " (t = " << time
+    message << "At step " << step << " (t = " << phase_time
             << " s) the energy balance error is " << std::abs(error) / scale
             << " of the energy in play, with the displacement " << where
             << ": the explicit scheme is unstable, and the run was stopped "
@@ -457,7 +481,7 @@ namespace rupture
   Simulator<dim>::statistics_row() const
   {
     std::vector<double> row = {static_cast<double>(step),
-                               time,
+                               phase_time,
                                time_step,
                                static_cast<double>(last_linear_iterations),
                                kinetic_energy,
@@ -500,6 +524,11 @@ namespace rupture
         row.push_back(f.state_minimum[i]);
         row.push_back(f.state_maximum[i]);
       }
+    if (time_parameters.loading_phase)
+      {
+        row.push_back(in_dynamic_phase ? 1 : 0);
+        row.push_back(time);
+      }
     return row;
   }
 
@@ -524,7 +553,7 @@ namespace rupture
     // step, a stop on a signal) writes everything that is written at all.
     const bool all = force || signal != 0;
     const auto due = [&](const double interval, const double next) {
-      return interval >= 0 && (all || time >= next - 1e-9 * time_step);
+      return interval >= 0 && (all || phase_time >= next - 1e-9 * time_step);
     };
     const bool volume_due = due(output_interval, next_output_time);
     const bool fault_due =
@@ -541,14 +570,17 @@ namespace rupture
         volume_output->write(dof_handler,
                              ghosted_copy(0, displacement),
                              ghosted_copy(1, velocity),
-                             time,
+                             phase_time,
                              step);
-        next_output_time = time + output_interval;
+        next_output_time = phase_time + output_interval;
       }
     if (fault_due)
       {
-        fault_output->write_surface(*fault, *output_directory, time, step);
-        next_fault_output_time = time + fault_output_interval;
+        fault_output->write_surface(*fault,
+                                    *output_directory,
+                                    phase_time,
+                                    step);
+        next_fault_output_time = phase_time + fault_output_interval;
       }
     if (fault)
       fault_output->write_tables(*fault,
@@ -563,7 +595,7 @@ namespace rupture
       {
         std::ostringstream what;
         what << "Stopped by " << Interruption::signal_name(signal)
-             << " after step " << step << " (t = " << time
+             << " after step " << step << " (t = " << phase_time
              << " s). The results of every step done are written in "
              << output_directory->absolute_name() << ".";
         throw Interruption::Stopped(signal, what.str());

@@ -244,8 +244,8 @@ namespace rupture
       return;
 
     std::ostringstream message;
-    message << "At step " << step << " (t = " << time << " s) the " << what
-            << " is no longer finite, " << locate_largest(v)
+    message << "At step " << step << " (t = " << phase_time << " s) the "
+            << what << " is no longer finite, " << locate_largest(v)
             << "; the run was stopped before writing it. ";
     if (current_scheme() ==
         TimeIntegration::Scheme::explicit_central_difference)

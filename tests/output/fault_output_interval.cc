@@ -2,7 +2,11 @@
 // surface can be written more often than the volume, or without any volume
 // output; empty means the volume's interval; a value that is not one
 // finite number is an error naming the entry. The times listed in
-// fault.pvd and solution.pvd are printed.
+// fault.pvd and solution.pvd are printed. After a loading phase, the
+// loading phase's snapshots are time series of their own
+// (solution-loading.pvd, fault-loading.pvd) and those of the dynamic phase
+// count from its start, as the statistics' time column does (with the phase
+// and the time since the start of the run in its last two columns).
 
 #include <deal.II/base/mpi.h>
 
@@ -62,6 +66,50 @@ namespace
         list_times(name + "/solution.pvd");
       }
   }
+
+  void
+  run_loading_case()
+  {
+    const std::string prm =
+      std::string(SOURCE_DIR) + "/../fault/load_sequence_block_jacobi.prm";
+    std::string errors;
+    const int   code = tests::run_capture({prm,
+                                           "--set",
+                                           "Output directory=loading",
+                                           "--set",
+                                           "Output/Output interval=1000",
+                                           "--set",
+                                           "Fault/Output/Output interval=0.25",
+                                           "--set",
+                                           "Time integration/End time=0.5"},
+                                        errors);
+    std::printf("loading phase, then 0.5 s of rupture: exit code %d\n", code);
+    if (code != 0)
+      {
+        std::printf("%s", errors.c_str());
+        return;
+      }
+    for (const std::string f : {"solution-loading.pvd",
+                                "fault-loading.pvd",
+                                "solution.pvd",
+                                "fault.pvd"})
+      list_times("loading/" + f);
+    // step, time, phase, time since the start: the first and last row of
+    // each phase.
+    const auto rows  = tests::read_statistics("loading/statistics");
+    const auto phase = [&](const unsigned int i) {
+      return rows[i][rows[i].size() - 2];
+    };
+    for (unsigned int i = 0; i < rows.size(); ++i)
+      if (i == 0 || i + 1 == rows.size() || phase(i) != phase(i - 1) ||
+          phase(i) != phase(i + 1))
+        std::printf("  statistics: step %g, time %g s, phase %g, %g s "
+                    "since the start\n",
+                    rows[i][0],
+                    rows[i][1],
+                    phase(i),
+                    rows[i].back());
+  }
 } // namespace
 
 int
@@ -82,4 +130,5 @@ main(int argc, char **argv)
   // Not a number.
   run_case("bad", "5", "often");
   run_case("bad-inf", "5", "inf");
+  run_loading_case();
 }

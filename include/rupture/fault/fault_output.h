@@ -75,8 +75,16 @@ namespace rupture
       record(const Fault<dim> &fault, const double time);
 
       /**
+       * A loading phase starts: its fault surfaces are written as
+       * fault/loading_NNNNN.vtu and listed in fault-loading.pvd.
+       */
+      void
+      start_loading_phase();
+
+      /**
        * The dynamic phase starts (after a loading phase): the station time
-       * series start anew, with its time as their time 0.
+       * series start anew, with its time as their time 0, and so does the
+       * surface time series (fault/fault_NNNNN.vtu in fault.pvd).
        */
       void
       start_dynamic_phase();
@@ -125,6 +133,7 @@ namespace rupture
       Point<dim>                                        origin;
       std::vector<std::vector<types::global_dof_index>> faces;
       std::vector<std::pair<double, std::string>>       records;
+      std::string file_prefix = "fault", pvd_name = "fault.pvd";
     };
   } // namespace Fault
 } // namespace rupture

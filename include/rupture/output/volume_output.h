@@ -23,7 +23,8 @@ namespace rupture
   {
     /**
      * Writes the volume fields for ParaView: one .pvtu/.vtu set per output
-     * time in <output>/solution/, and the time series <output>/solution.pvd.
+     * time in <output>/solution/, and the time series <output>/solution.pvd
+     * (start_series() starts another one, for a loading phase).
      * Fields (any of available_fields()): displacement and velocity at the
      * points, the stress tensor (Pa) at the centre of each cell, the
      * material id and the MPI rank of each cell. A point is written once
@@ -88,6 +89,15 @@ namespace rupture
             const double                         time,
             const unsigned int                   step);
 
+      /**
+       * Start a new time series: later snapshots are written as
+       * solution/<file_prefix>_NNNNN.* (NNNNN the step) and listed, with
+       * their times, in <output>/<pvd_name>. The first series is
+       * "solution" in solution.pvd.
+       */
+      void
+      start_series(const std::string &file_prefix, const std::string &pvd_name);
+
     private:
       /**
        * What a piece keeps between snapshots.
@@ -118,6 +128,7 @@ namespace rupture
       const unsigned int                          cells_per_piece;
       const MPI_Comm                              communicator;
       std::vector<std::pair<double, std::string>> records;
+      std::string file_prefix = "solution", pvd_name = "solution.pvd";
       /// Whether each of available_fields() is written.
       std::array<bool, 5> write_field{};
 

@@ -467,7 +467,15 @@ namespace rupture
     double time;
     /// Start of the dynamic phase (0 without a loading phase): the time 0
     /// of station files and rupture times.
-    double       dynamic_start = 0;
+    double dynamic_start = 0;
+    /// The time of the current phase's clock: since the start of the
+    /// dynamic phase (in its steps and after), since the start of the run
+    /// before. Computed from step counts, without the round-off of time -
+    /// dynamic_start after a long loading phase. Printed and written
+    /// everywhere; the absolute time goes in a column of its own.
+    double phase_time = 0;
+    /// Whether the dynamic phase after a loading phase has started.
+    bool         in_dynamic_phase = false;
     double       time_step;
     double       stable_time_step;
     unsigned int step;
