@@ -376,13 +376,43 @@ namespace rupture
               where << pair.location;
               values << pair.normal_penalty << " and "
                      << pair.tangential_penalty;
-              AssertThrow(split_node_method || (pair.normal_penalty > 0 &&
-                                                pair.tangential_penalty > 0),
+              AssertThrow(split_node_method ||
+                            (pair.normal_penalty > 0 &&
+                             pair.tangential_penalty > 0 &&
+                             std::isfinite(pair.normal_penalty) &&
+                             std::isfinite(pair.tangential_penalty)),
                           ExcMessage("<Fault/Normal penalty> and <Fault/"
-                                     "Tangential penalty> must be > 0 (Pa/m), "
-                                     "but are " +
+                                     "Tangential penalty> must be finite and "
+                                     "> 0 (Pa/m), but are " +
                                      values.str() + " at (" + where.str() +
                                      ")."));
+              // A penalty many orders of magnitude above the stiffness of
+              // the elements next to the fault (about mu / h per area)
+              // leaves their equations in the round-off of the contact's,
+              // and overflows the system matrix long before it is infinite.
+              if (!split_node_method && pair.shear_modulus > 0)
+                {
+                  const double h =
+                    std::pow(pair.area, 1. / std::max(dim - 1, 1));
+                  const double element_stiffness = pair.shear_modulus / h;
+                  const double largest =
+                    std::max(pair.normal_penalty, pair.tangential_penalty);
+                  std::ostringstream limit;
+                  limit << 1e10 * element_stiffness;
+                  AssertThrow(largest <= 1e10 * element_stiffness,
+                              ExcMessage(
+                                "<Fault/Normal penalty> and <Fault/"
+                                "Tangential penalty> are " +
+                                values.str() + " Pa/m at (" + where.str() +
+                                "), more than 1e10 times the stiffness of "
+                                "the elements next to the fault there "
+                                "(shear modulus / element size): the elastic "
+                                "equations would be lost in the round-off of "
+                                "the contact's. Allowed: up to " +
+                                limit.str() +
+                                " Pa/m here; the paper's 5e11 Pa/m is about "
+                                "1e4 times it at 2.5 km."));
+                }
               {
                 const double tn = pair.initial_traction * pair.normal;
                 const double ts =

@@ -127,132 +127,139 @@ namespace rupture
       faces           = fault.gather_faces();
       const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
 
+      // Rank 0 does the work; an error there (a malformed entry, a station
+      // off the fault) is raised on every rank together.
       std::string error;
       if (root)
-        {
-          Tensor<1, dim>                                n;
-          std::map<types::global_dof_index, Point<dim>> location;
-          for (const auto &r : all)
-            {
-              n += r.normal;
-              location[r.key] = r.location;
-            }
-          if (n.norm() > 0)
-            n /= n.norm();
-          if (!strike_text.empty())
-            {
-              strike = Utilities::parse_vector<dim>(
-                strike_text, "Fault/Output/Along-strike direction");
-              AssertThrow(strike.norm() > 0,
-                          ExcMessage("<Fault/Output/Along-strike direction> "
-                                     "must not be zero."));
-              strike /= strike.norm();
-            }
-          else if (dim == 2)
-            {
-              strike[0] = n[1];
-              strike[1] = -n[0];
-            }
-          else
-            {
-              Tensor<1, dim> ez;
-              ez[dim - 1] = 1;
-              strike      = cross_product_3d(n, ez);
-              if (strike.norm() < 1e-8)
-                {
-                  strike    = Tensor<1, dim>();
-                  strike[0] = 1;
-                }
-              strike /= strike.norm();
-            }
-          if (dim == 3)
-            {
-              dip = cross_product_3d(n, strike);
-              if (dip[dim - 1] > 0)
-                dip = -dip;
-            }
+        try
+          {
+            Tensor<1, dim>                                n;
+            std::map<types::global_dof_index, Point<dim>> location;
+            for (const auto &r : all)
+              {
+                n += r.normal;
+                location[r.key] = r.location;
+              }
+            if (n.norm() > 0)
+              n /= n.norm();
+            if (!strike_text.empty())
+              {
+                strike = Utilities::parse_vector<dim>(
+                  strike_text, "Fault/Output/Along-strike direction");
+                AssertThrow(strike.norm() > 0,
+                            ExcMessage("<Fault/Output/Along-strike direction> "
+                                       "must not be zero."));
+                strike /= strike.norm();
+              }
+            else if (dim == 2)
+              {
+                strike[0] = n[1];
+                strike[1] = -n[0];
+              }
+            else
+              {
+                Tensor<1, dim> ez;
+                ez[dim - 1] = 1;
+                strike      = cross_product_3d(n, ez);
+                if (strike.norm() < 1e-8)
+                  {
+                    strike    = Tensor<1, dim>();
+                    strike[0] = 1;
+                  }
+                strike /= strike.norm();
+              }
+            if (dim == 3)
+              {
+                dip = cross_product_3d(n, strike);
+                if (dip[dim - 1] > 0)
+                  dip = -dip;
+              }
 
-          // Locate each station in a fault face.
-          for (auto &s : stations)
-            {
-              double best = std::numeric_limits<double>::max();
-              for (const auto &face : faces)
-                {
-                  std::vector<Point<dim>> v;
-                  for (const auto key : face)
-                    v.push_back(location.count(key) ? location[key] :
-                                                      Point<dim>());
-                  bool present = true;
-                  for (const auto key : face)
-                    present = present && location.count(key);
-                  if (!present)
-                    continue; // a face whose border nodes are welded
-                  double              xi = 0, eta = 0, diameter = 0;
-                  std::vector<double> w;
-                  for (const auto &p : v)
-                    diameter = std::max(diameter, p.distance(v[0]));
-                  if (dim == 2)
-                    {
-                      const Tensor<1, dim> e = v[1] - v[0];
-                      xi = (s.location - v[0]) * e / e.norm_square();
-                      w  = {1 - xi, xi};
-                    }
-                  else
-                    for (unsigned int it = 0; it < 20; ++it)
+            // Locate each station in a fault face.
+            for (auto &s : stations)
+              {
+                double best = std::numeric_limits<double>::max();
+                for (const auto &face : faces)
+                  {
+                    std::vector<Point<dim>> v;
+                    for (const auto key : face)
+                      v.push_back(location.count(key) ? location[key] :
+                                                        Point<dim>());
+                    bool present = true;
+                    for (const auto key : face)
+                      present = present && location.count(key);
+                    if (!present)
+                      continue; // a face whose border nodes are welded
+                    double              xi = 0, eta = 0, diameter = 0;
+                    std::vector<double> w;
+                    for (const auto &p : v)
+                      diameter = std::max(diameter, p.distance(v[0]));
+                    if (dim == 2)
                       {
-                        w = {(1 - xi) * (1 - eta),
-                             xi * (1 - eta),
-                             (1 - xi) * eta,
-                             xi * eta};
-                        Point<dim> x;
-                        for (unsigned int k = 0; k < 4; ++k)
-                          x += w[k] * v[k];
-                        const Tensor<1, dim> dx =
-                          (v[1] - v[0]) * (1 - eta) + (v[3] - v[2]) * eta;
-                        const Tensor<1, dim> de =
-                          (v[2] - v[0]) * (1 - xi) + (v[3] - v[1]) * xi;
-                        const Tensor<1, dim> r = s.location - x;
-                        const double a = dx * dx, b = dx * de, c = de * de;
-                        const double det = a * c - b * b;
-                        xi += (c * (dx * r) - b * (de * r)) / det;
-                        eta += (a * (de * r) - b * (dx * r)) / det;
+                        const Tensor<1, dim> e = v[1] - v[0];
+                        xi = (s.location - v[0]) * e / e.norm_square();
+                        w  = {1 - xi, xi};
                       }
-                  if (dim == 3)
-                    w = {(1 - xi) * (1 - eta),
-                         xi * (1 - eta),
-                         (1 - xi) * eta,
-                         xi * eta};
-                  Point<dim> x;
-                  for (unsigned int k = 0; k < w.size(); ++k)
-                    x += w[k] * v[k];
-                  const double tol = 1e-6 * diameter;
-                  const double outside =
-                    std::max({-xi, xi - 1, -eta, eta - 1, 0.});
-                  const double distance =
-                    x.distance(s.location) + outside * diameter;
-                  best = std::min(best, distance);
-                  if (distance <= tol)
-                    {
-                      s.nodes   = face;
-                      s.weights = w;
-                      break;
-                    }
-                }
-              if (s.nodes.empty())
-                {
-                  std::ostringstream m;
-                  m << "The station <" << s.name << "> at (" << s.location
-                    << ") given in <Fault/Output/Stations> is not on the "
-                       "fault (its distance to the fault's faces is "
-                    << best
-                    << " m). Stations must lie on the part of the interface "
-                       "that <Fault/Fault region> makes a fault.";
-                  error = m.str();
-                  break;
-                }
-              station_keys.insert(s.nodes.begin(), s.nodes.end());
-            }
-        }
+                    else
+                      for (unsigned int it = 0; it < 20; ++it)
+                        {
+                          w = {(1 - xi) * (1 - eta),
+                               xi * (1 - eta),
+                               (1 - xi) * eta,
+                               xi * eta};
+                          Point<dim> x;
+                          for (unsigned int k = 0; k < 4; ++k)
+                            x += w[k] * v[k];
+                          const Tensor<1, dim> dx =
+                            (v[1] - v[0]) * (1 - eta) + (v[3] - v[2]) * eta;
+                          const Tensor<1, dim> de =
+                            (v[2] - v[0]) * (1 - xi) + (v[3] - v[1]) * xi;
+                          const Tensor<1, dim> r = s.location - x;
+                          const double a = dx * dx, b = dx * de, c = de * de;
+                          const double det = a * c - b * b;
+                          xi += (c * (dx * r) - b * (de * r)) / det;
+                          eta += (a * (de * r) - b * (dx * r)) / det;
+                        }
+                    if (dim == 3)
+                      w = {(1 - xi) * (1 - eta),
+                           xi * (1 - eta),
+                           (1 - xi) * eta,
+                           xi * eta};
+                    Point<dim> x;
+                    for (unsigned int k = 0; k < w.size(); ++k)
+                      x += w[k] * v[k];
+                    const double tol = 1e-6 * diameter;
+                    const double outside =
+                      std::max({-xi, xi - 1, -eta, eta - 1, 0.});
+                    const double distance =
+                      x.distance(s.location) + outside * diameter;
+                    best = std::min(best, distance);
+                    if (distance <= tol)
+                      {
+                        s.nodes   = face;
+                        s.weights = w;
+                        break;
+                      }
+                  }
+                if (s.nodes.empty())
+                  {
+                    std::ostringstream m;
+                    m << "The station <" << s.name << "> at (" << s.location
+                      << ") given in <Fault/Output/Stations> is not on the "
+                         "fault (its distance to the fault's faces is "
+                      << best
+                      << " m). Stations must lie on the part of the interface "
+                         "that <Fault/Fault region> makes a fault.";
+                    error = m.str();
+                    break;
+                  }
+                station_keys.insert(s.nodes.begin(), s.nodes.end());
+              }
+          }
+        catch (const ExceptionBase &e)
+          {
+            error = Utilities::message_of(e);
+          }
       error = dealii::Utilities::MPI::broadcast(comm, error, 0);
       AssertThrow(error.empty(), ExcMessage(error));
       station_keys = dealii::Utilities::MPI::broadcast(comm, station_keys, 0);

@@ -206,9 +206,13 @@ namespace rupture
               out << x;
               return out.str();
             };
+            // Wave speeds above the speed of light are a unit error (the
+            // program works in SI units), and they would make the explicit
+            // step, which scales with h / vp, vanishingly small.
+            const double speed_of_light = 299792458;
             AssertThrow(std::isfinite(m.mu) && std::isfinite(m.lambda) &&
                           std::isfinite(vp) && std::isfinite(vs) && vp > 0 &&
-                          vs > 0,
+                          vs > 0 && vp <= speed_of_light,
                         ExcMessage("The elastic constants" + which +
                                    " are out of range: from its <Material> "
                                    "entries (density " +
@@ -218,7 +222,8 @@ namespace rupture
                                    " Pa, vp = " + number(vp) +
                                    " m/s and vs = " + number(vs) +
                                    " m/s. Allowed: values whose moduli and "
-                                   "wave speeds are finite and positive (in "
+                                   "wave speeds are finite and positive, the "
+                                   "wave speeds below the speed of light (in "
                                    "SI units: e.g. 2700 kg/m^3, 6000 and "
                                    "3464 m/s)."));
           }

@@ -1,6 +1,9 @@
 #include <rupture/simulator/simulator.h>
 #include <rupture/time_integration/central_difference.h>
 
+#include <cmath>
+#include <string>
+
 namespace rupture
 {
   namespace TimeIntegration
@@ -43,6 +46,17 @@ namespace rupture
           ++k;
         }
       inverse_diagonal.compress(VectorOperation::insert);
+      AssertThrow(std::isfinite(inverse_diagonal.l2_norm()) &&
+                    std::isfinite(1 + g * s.rayleigh_alpha),
+                  ExcMessage("The diagonal M (1 + gamma dt alpha) + gamma dt "
+                             "C_absorbing of the explicit step is not finite "
+                             "with <Damping/Rayleigh alpha> = " +
+                             std::to_string(s.rayleigh_alpha) +
+                             " 1/s and the time step " +
+                             std::to_string(s.time_step) +
+                             " s. Allowed: a finite product of the two (a few "
+                             "percent of critical damping is alpha ~ 0.1-1 "
+                             "1/s)."));
       // The split-node force is zero away from the fault's entries, and the
       // step touches only those.
       fault_entries.clear();

@@ -1,7 +1,9 @@
 #include <rupture/simulator/simulator.h>
 #include <rupture/time_integration/implicit_newmark.h>
 
+#include <cmath>
 #include <functional>
+#include <sstream>
 
 namespace rupture
 {
@@ -27,9 +29,23 @@ namespace rupture
       const NewmarkCoefficients c(s.time_parameters.beta,
                                   s.time_parameters.gamma,
                                   h);
-      s.assemble_system_matrix(1 + c.a1 * s.rayleigh_beta,
-                               c.a0 + c.a1 * s.rayleigh_alpha,
-                               c.a1);
+      const double              stiffness_factor = 1 + c.a1 * s.rayleigh_beta,
+                   mass_factor = c.a0 + c.a1 * s.rayleigh_alpha;
+      if (!std::isfinite(stiffness_factor) || !std::isfinite(mass_factor))
+        {
+          std::ostringstream message;
+          message << "The effective stiffness K + a0 M + a1 C of the implicit "
+                     "step is not finite: with the time step "
+                  << h << " s, <Damping/Rayleigh alpha> = " << s.rayleigh_alpha
+                  << " 1/s and <Damping/Rayleigh beta> = " << s.rayleigh_beta
+                  << " s give the factors " << stiffness_factor << " of K and "
+                  << mass_factor
+                  << " of M. Allowed: damping coefficients for which both are "
+                     "finite (a few percent of critical damping is "
+                     "alpha ~ 0.1-1 1/s, beta ~ 1e-4-1e-3 s).";
+          AssertThrow(false, ExcMessage(message.str()));
+        }
+      s.assemble_system_matrix(stiffness_factor, mass_factor, c.a1);
     }
 
 
