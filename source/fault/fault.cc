@@ -410,8 +410,9 @@ namespace rupture
                                 "equations would be lost in the round-off of "
                                 "the contact's. Allowed: up to " +
                                 limit.str() +
-                                " Pa/m here; the paper's 5e11 Pa/m is about "
-                                "1e4 times it at 2.5 km."));
+                                " Pa/m here (the paper's 5e11 Pa/m is about "
+                                "1e4 times the elements' stiffness at 2.5 "
+                                "km)."));
                 }
               {
                 const double tn = pair.initial_traction * pair.normal;

@@ -270,6 +270,36 @@ namespace rupture
                                 const double duration)
   {
     using Scheme = TimeIntegration::Scheme;
+    // Without inertia the stiffness alone must hold the body: a direction
+    // that no boundary condition holds anywhere leaves it free to move, the
+    // system singular, and the solver would break down.
+    if (scheme == Scheme::quasi_static)
+      {
+        std::array<double, dim> held{};
+        for (const auto &k : kinematic_dofs)
+          held[k.component] = 1;
+        for (unsigned int c = 0; c < dim; ++c)
+          held[c] = dealii::Utilities::MPI::max(held[c], communicator);
+        std::string  free_directions;
+        unsigned int n_free = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          if (held[c] == 0)
+            free_directions +=
+              std::string(n_free++ == 0 ? "" : " and ") + "xyz"[c];
+        AssertThrow(
+          free_directions.empty(),
+          ExcMessage(
+            std::string("The quasi-static ") +
+            (time_parameters.loading_phase ? "loading phase" : "run") +
+            " has no boundary condition that holds the model in the " +
+            free_directions + (n_free > 1 ? " directions" : " direction") +
+            ": without inertia nothing keeps the body from moving "
+            "as a whole, its stiffness matrix is singular and no solver can "
+            "find its displacement. Allowed: at least one boundary that holds "
+            "each direction, with <Boundary conditions/Fixed>, <Boundary "
+            "conditions/Roller> or <Boundary conditions/Prescribed "
+            "velocity>."));
+      }
     // The time step, and for the explicit scheme its stability check.
     time_step = requested_time_step;
     if (scheme == Scheme::explicit_central_difference)

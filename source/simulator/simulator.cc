@@ -250,14 +250,7 @@ namespace rupture
       }
     else
       run_phase(time_parameters.end_time, false);
-
-    if (fault)
-      fault_output->write_tables(*fault,
-                                 *output_directory,
-                                 time_step,
-                                 test_mode);
-    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
-      statistics.write(output_directory->record("statistics"));
+    // (The last step of a phase writes everything: run_phase() forces it.)
 
     const auto &last = statistics.last_row();
     pcout << std::scientific << std::setprecision(6)

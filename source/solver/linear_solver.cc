@@ -1,3 +1,4 @@
+#include <rupture/base/utilities.h>
 #include <rupture/solver/linear_solver.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -219,7 +220,7 @@ namespace rupture
       clear();
       transform.reset();
       const bool has_pairs =
-        Utilities::MPI::sum(pairs.size(), communicator) > 0;
+        dealii::Utilities::MPI::sum(pairs.size(), communicator) > 0;
       penalty_fault = has_pairs;
       if (!use_pair_transform || solver_type == "direct" ||
           solver_type == "MUMPS" || !has_pairs)
@@ -497,6 +498,25 @@ namespace rupture
                         "<Solver/Linear solver tolerance>, or check the "
                         "model for a part that no boundary condition "
                         "holds in place (a singular stiffness)."));
+        }
+      catch (const ExceptionBase &e)
+        {
+          // Trilinos's own failures (a breakdown of its Krylov method, a
+          // failed factorisation) come with the library's words only.
+          AssertThrow(false,
+                      ExcMessage(
+                        std::string("The ") + (use_cg ? "CG" : "GMRES") +
+                        " solve of the step (algebraic multigrid) failed "
+                        "inside Trilinos (" +
+                        Utilities::message_of(e) +
+                        "). This happens when the system is singular or "
+                        "nearly so: check that the boundary conditions hold "
+                        "every part of the model (<Boundary conditions>), "
+                        "that no material is far softer or stiffer than the "
+                        "others (<Material>), and that the fault penalties "
+                        "are not orders of magnitude above the stiffness of "
+                        "the elements (<Fault/Normal penalty>, <Fault/"
+                        "Tangential penalty>)."));
         }
       last_residual = control.last_value() / b_norm;
       return control.last_step();

@@ -291,6 +291,20 @@ main(int argc, char **argv)
          "Fault/Traction perturbation/Traction=log(0); 0"});
   check("initial velocity that is not finite",
         {"valid.prm", "--set", "Initial conditions/Velocity=0; 1/0"});
+  check("a quasi-static model that no boundary condition holds",
+        {"valid.prm",
+         "--set",
+         "Boundary conditions/Fixed=",
+         "--set",
+         "Time integration/Scheme=quasi-static"});
+  check("fault penalties far above the elements' stiffness",
+        {"fault_penalty.prm",
+         "--set",
+         "Fault/Normal penalty=1e30",
+         "--set",
+         "Fault/Tangential penalty=1e11"});
+  check("wave speeds above the speed of light",
+        {"valid.prm", "--set", "Material/P-wave speed=4e8"});
   // The memory of the machine is in the message: only its parts are
   // printed.
   for (const std::string &set : {"Scene/Box/Number of cells=100000, 100000",
