@@ -119,9 +119,12 @@ namespace rupture
 
     template <int dim>
     void
-    FaultOutput<dim>::setup(const Fault<dim> &fault, const MPI_Comm comm)
+    FaultOutput<dim>::setup(const Fault<dim> &fault,
+                            const MPI_Comm    comm,
+                            const double      surface)
     {
       communicator    = comm;
+      this->surface   = surface;
       origin          = fault.reference_point();
       const auto all  = fault.gather();
       faces           = fault.gather_faces();
@@ -281,6 +284,20 @@ namespace rupture
     FaultOutput<dim>::dip_component(const Tensor<1, dim> &v) const
     {
       return (dim == 3) ? v * dip : 0.;
+    }
+
+
+
+    template <int dim>
+    double
+    FaultOutput<dim>::down_dip_distance(const Point<dim> &x) const
+    {
+      if (dim != 3)
+        return 0;
+      // dip points down: -dip_z is the sine of the dip angle.
+      const double sine = -dip[dim - 1];
+      return (sine > 1e-6) ? (surface - x[dim - 1]) / sine :
+                             dip_component(x - origin);
     }
 
 
@@ -501,7 +518,7 @@ namespace rupture
               << "# time_step = " << time_step << "\n"
               << "# num_time_steps = " << s.rows.size() << "\n"
               << "# location = " << strike_component(r) / 1e3
-              << " km along strike, " << dip_component(r) / 1e3
+              << " km along strike, " << down_dip_distance(s.location) / 1e3
               << " km down-dip\n"
               << "# Column #1 = Time (s)\n"
               << "# Column #2 = horizontal slip (m)\n"
@@ -547,7 +564,7 @@ namespace rupture
       out << "# problem = rupture rupture-time contours\n# author = rupture\n"
           << "# code = rupture\n# code_version = 0.1\n"
           << "# Column #1 = Distance along strike (m)\n"
-          << "# Column #2 = Distance down-dip (m)\n"
+          << "# Column #2 = Distance down-dip from the surface (m)\n"
           << "# Column #3 = Rupture time (s); 1.0E+09 where the fault did "
              "not rupture\n"
           << "j k t\n"
@@ -555,8 +572,8 @@ namespace rupture
       for (const auto &rec : records)
         {
           const Tensor<1, dim> r = rec.location - origin;
-          out << strike_component(r) << " " << dip_component(r) << " "
-              << (rec.rupture_time < 0 ? 1e9 : rec.rupture_time) << "\n";
+          out << strike_component(r) << " " << down_dip_distance(rec.location)
+              << " " << (rec.rupture_time < 0 ? 1e9 : rec.rupture_time) << "\n";
         }
       directory.write("rupture_time.dat", out.str());
     }

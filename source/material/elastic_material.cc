@@ -99,6 +99,18 @@ namespace rupture
 
     namespace
     {
+      /// A number as the screen shows it (six digits), not as to_string()'s
+      /// fixed-point (300 digits for 1e300).
+      std::string
+      short_number(const double x)
+      {
+        std::ostringstream out;
+        out << x;
+        return out.str();
+      }
+
+
+
       std::vector<double>
       read_list(ParameterHandler  &prm,
                 const std::string &entry,
@@ -155,25 +167,31 @@ namespace rupture
             m.name              = names[i];
             const std::string which =
               " of material " + std::to_string(i) + " (" + names[i] + ")";
-            AssertThrow(density[i] > 0 && std::isfinite(density[i]),
-                        ExcMessage("<Material/Density>" + which + " is " +
-                                   std::to_string(density[i]) +
-                                   ", but a density must be > 0 (kg/m^3)."));
+            {
+              // Far outside this range the mass matrix over- or underflows
+              // (a density of 1e308 times a cell's volume).
+              std::ostringstream message;
+              message << "<Material/Density>" << which << " is " << density[i]
+                      << " kg/m^3. Allowed: densities from 1e-3 to 1e6 kg/m^3 "
+                         "(SI units; rock is about 2700).";
+              AssertThrow(density[i] >= 1e-3 && density[i] <= 1e6,
+                          ExcMessage(message.str()));
+            }
             m.density = density[i];
             if (by_speeds)
               {
                 const double vp = a[i], vs = b[i];
                 AssertThrow(vs > 0 && std::isfinite(vs),
                             ExcMessage("<Material/S-wave speed>" + which +
-                                       " is " + std::to_string(vs) +
+                                       " is " + short_number(vs) +
                                        ", but it must be > 0 (m/s)."));
                 AssertThrow(vp > std::sqrt(2.) * vs && std::isfinite(vp),
                             ExcMessage(
                               "<Material/P-wave speed>" + which + " is " +
-                              std::to_string(vp) +
+                              short_number(vp) +
                               " m/s, but it must exceed sqrt(2) times the "
                               "S-wave speed (" +
-                              std::to_string(std::sqrt(2.) * vs) +
+                              short_number(std::sqrt(2.) * vs) +
                               " m/s); otherwise Lame's lambda is negative "
                               "and Poisson's ratio is < 0 (this program "
                               "requires 0 < Poisson's ratio < 0.5 when "
@@ -186,11 +204,11 @@ namespace rupture
                 const double E = a[i], nu = b[i];
                 AssertThrow(E > 0 && std::isfinite(E),
                             ExcMessage("<Material/Young's modulus>" + which +
-                                       " is " + std::to_string(E) +
+                                       " is " + short_number(E) +
                                        ", but it must be > 0 (Pa)."));
                 AssertThrow(nu > -1 && nu < 0.5,
                             ExcMessage("<Material/Poisson's ratio>" + which +
-                                       " is " + std::to_string(nu) +
+                                       " is " + short_number(nu) +
                                        ", but it must lie in (-1, 0.5); 0.5 "
                                        "is an incompressible material, "
                                        "which this displacement formulation "

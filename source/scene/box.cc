@@ -106,11 +106,26 @@ namespace rupture
         upper_corner = Point<dim>(Utilities::parse_vector<dim>(
           prm.get("Upper corner"), "Scene/Box/Upper corner", true));
         for (unsigned int d = 0; d < dim; ++d)
-          AssertThrow(upper_corner[d] > lower_corner[d],
-                      ExcMessage("<Scene/Box/Upper corner> must be larger "
-                                 "than <Scene/Box/Lower corner> in every "
-                                 "coordinate, but coordinate " +
-                                 std::to_string(d) + " is not."));
+          {
+            AssertThrow(upper_corner[d] > lower_corner[d],
+                        ExcMessage("<Scene/Box/Upper corner> must be larger "
+                                   "than <Scene/Box/Lower corner> in every "
+                                   "coordinate, but coordinate " +
+                                   std::to_string(d) + " is not."));
+            // In metres: the mesh's Jacobians under- or overflow long
+            // before the limits of a double.
+            std::ostringstream message;
+            message << "<Scene/Box/Lower corner> and <Scene/Box/Upper "
+                       "corner> give coordinate "
+                    << d << " the range [" << lower_corner[d] << ", "
+                    << upper_corner[d]
+                    << "] m. Allowed: coordinates within +-1e9 m and an "
+                       "extent of at least 1e-3 m (SI units).";
+            AssertThrow(std::abs(lower_corner[d]) <= 1e9 &&
+                          std::abs(upper_corner[d]) <= 1e9 &&
+                          upper_corner[d] - lower_corner[d] >= 1e-3,
+                        ExcMessage(message.str()));
+          }
 
         const Tensor<1, dim> cells =
           Utilities::parse_vector<dim>(prm.get("Number of cells"),

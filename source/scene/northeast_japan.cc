@@ -85,14 +85,35 @@ namespace rupture
       prm.leave_subsection();
       prm.leave_subsection();
 
-      AssertThrow(length > 0 && width > 0 && depth > 0 && cell_size > 0,
-                  ExcMessage("<Scene/Northeast Japan>: Length, Width, Depth "
-                             "and Coarse cell size must be > 0."));
-      AssertThrow(trench_x < length,
-                  ExcMessage("<Scene/Northeast Japan/Trench position> = " +
-                             std::to_string(trench_x) +
-                             " must lie inside the block (< Length = " +
-                             std::to_string(length) + ")."));
+      // Lengths in metres: from a millimetre to a million kilometres (the
+      // mesh's Jacobians under- or overflow long before the limits of a
+      // double).
+      const auto check_length = [](const std::string &name,
+                                   const double       value,
+                                   const bool         zero_allowed) {
+        std::ostringstream message;
+        message << "<Scene/Northeast Japan/" << name << "> = " << value
+                << " m is out of range. Allowed: "
+                << (zero_allowed ? "0 or " : "")
+                << "lengths from 1e-3 to 1e9 m (SI units).";
+        AssertThrow((zero_allowed && value == 0) ||
+                      (value >= 1e-3 && value <= 1e9),
+                    ExcMessage(message.str()));
+      };
+      check_length("Length", length, false);
+      check_length("Width", width, false);
+      check_length("Depth", depth, false);
+      check_length("Coarse cell size", cell_size, false);
+      check_length("Trench position", trench_x, true);
+      check_length("Crust thickness", crust_thickness, false);
+      check_length("Plate thickness", plate_thickness, true);
+      {
+        std::ostringstream message;
+        message << "<Scene/Northeast Japan/Trench position> = " << trench_x
+                << " m must lie inside the block (< Length = " << length
+                << " m).";
+        AssertThrow(trench_x < length, ExcMessage(message.str()));
+      }
       AssertThrow(fault_x(-depth) > 0,
                   ExcMessage("<Scene/Northeast Japan>: the plate interface "
                              "leaves the block through the west side. Allowed "

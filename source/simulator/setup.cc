@@ -377,7 +377,16 @@ namespace rupture
       null_space = rigid_body_modes();
     if (fault)
       {
-        fault_output->setup(*fault, communicator);
+        {
+          // The model's top, from which down-dip distances count.
+          double top = -std::numeric_limits<double>::max();
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const auto v : cell->vertex_indices())
+                top = std::max(top, cell->vertex(v)[dim - 1]);
+          top = dealii::Utilities::MPI::max(top, communicator);
+          fault_output->setup(*fault, communicator, top);
+        }
         if (!fault->uses_split_nodes() && system_matrix.m() > 0)
           linear_solver.set_fault_pairs(fault->dof_pairs(),
                                         locally_owned_dofs,

@@ -63,10 +63,14 @@ namespace rupture
 
       /**
        * Locate the stations on the fault (an error names a station that is
-       * not on it) and set the strike and dip directions.
+       * not on it) and set the strike and dip directions. @p surface is the
+       * height of the model's top (its largest last coordinate), from which
+       * down-dip distances are measured, positive down, as in SCEC's files.
        */
       void
-      setup(const Fault<dim> &fault, const MPI_Comm communicator);
+      setup(const Fault<dim> &fault,
+            const MPI_Comm    communicator,
+            const double      surface);
 
       /**
        * Record the station values of the current step.
@@ -121,6 +125,11 @@ namespace rupture
       strike_component(const Tensor<1, dim> &v) const;
       double
       dip_component(const Tensor<1, dim> &v) const;
+      /// The down-dip distance of @p x from the surface (3-D; 0 in 2-D):
+      /// its depth over the sine of the dip, or, on a horizontal fault,
+      /// its distance down-dip from the plane point.
+      double
+      down_dip_distance(const Point<dim> &x) const;
 
       MPI_Comm                                          communicator;
       std::string                                       station_text;
@@ -131,6 +140,7 @@ namespace rupture
       Tensor<1, dim>                                    strike;
       Tensor<1, dim>                                    dip;
       Point<dim>                                        origin;
+      double                                            surface = 0;
       std::vector<std::vector<types::global_dof_index>> faces;
       std::vector<std::pair<double, std::string>>       records;
       std::string file_prefix = "fault", pvd_name = "fault.pvd";
