@@ -164,6 +164,29 @@ namespace rupture
 
 
     template <int dim>
+    void
+    Fault<dim>::check_time_functions(const double duration) const
+    {
+      if (!traction_perturbation)
+        return;
+      perturbation_time_function->set_time(0);
+      for (unsigned int i = 0; i <= 1000; ++i)
+        {
+          const double       t = duration * i / 1000.;
+          const double       g = perturbation_time_function->value(Point<1>(t));
+          std::ostringstream message;
+          message << "<Fault/Traction perturbation/Time function> must be "
+                     "finite, but is "
+                  << g << " at t = " << t
+                  << " s. Allowed: expressions of t that are finite over the "
+                     "whole run.";
+          AssertThrow(std::isfinite(g), ExcMessage(message.str()));
+        }
+    }
+
+
+
+    template <int dim>
     Tensor<1, dim>
     Fault<dim>::imposed_slip(const NodePair &pair, const double delay) const
     {

@@ -73,6 +73,24 @@ namespace rupture
         assemble_load_vector(0, load);
       }
     interpolate_initial_conditions();
+    // The dynamic phase after a loading phase is prepared only when the
+    // loading ends: its step count is checked now (with a step of its own;
+    // the explicit scheme's automatic step needs the loaded state's phase).
+    if (time_parameters.loading_phase && time_parameters.time_step > 0)
+      {
+        const double n_steps = std::ceil(
+          time_parameters.end_time / time_parameters.time_step - 1e-9);
+        std::ostringstream message;
+        message << "The dynamic phase of " << time_parameters.end_time
+                << " s with time steps of " << time_parameters.time_step
+                << " s would take " << n_steps
+                << " steps. Allowed are 1 to 1e9 steps: check <Time "
+                   "integration/End time> and <Time integration/Time step>.";
+        AssertThrow(n_steps >= 1 && n_steps <= 1e9, ExcMessage(message.str()));
+      }
+    // Time functions that are not finite somewhere in the run.
+    if (fault)
+      fault->check_time_functions(time_parameters.end_time);
 
     // Everything that can reject the input has run; only now is the output
     // directory touched, so a bad input never destroys earlier results.

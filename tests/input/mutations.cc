@@ -7,7 +7,9 @@
 // mutation must end with an "Error:" message that names what is wrong, or be
 // a correct run: no signal, no raw library text in the message, no NaN or
 // Inf in any file written (text tables and the binary arrays of the volume
-// snapshots alike), no file outside the output directory.
+// snapshots alike), no file outside the output directory, and, when the
+// input is refused, the earlier results in the output directory left
+// byte-identical.
 //
 // The output lists each case with its outcome (the entry the message names,
 // or "ran"); a case that breaks a rule is printed with "VIOLATION".
@@ -325,9 +327,14 @@ main(int argc, char **argv)
                             const std::string &prm_text,
                             const Base        &base,
                             const std::string &override_) {
+    // The output directory holds an earlier run's results, which bad input
+    // must leave byte-identical.
     if (root)
       {
         fs::remove_all("out");
+        fs::create_directory("out");
+        std::ofstream("out/statistics") << "earlier results\n";
+        std::ofstream("out/log.txt") << "earlier log\n";
         std::ofstream("case.prm", std::ios::binary) << prm_text;
       }
     MPI_Barrier(comm);
@@ -384,6 +391,15 @@ main(int argc, char **argv)
           }
         if (code == 0 && !fs::exists("out/statistics"))
           violations.emplace_back("exit 0 without statistics");
+        // Refused input (the directory was never opened: no manifest)
+        // leaves the earlier results as they were.
+        if (code != 0 && !fs::exists("out/.rupture-manifest.0") &&
+            (files_below("out") !=
+               std::set<std::string>{"log.txt", "statistics"} ||
+             read("out/statistics") != "earlier results\n" ||
+             read("out/log.txt") != "earlier log\n"))
+          violations.emplace_back("changed the earlier results in the "
+                                    "output directory");
       }
 
     std::string outcome;
@@ -395,10 +411,13 @@ main(int argc, char **argv)
     else
       {
         ++n_errors;
-        // The entry the message names, if any.
+        // The entry the message names, if any. An error after the output
+        // directory was opened (a run that became unstable) is marked.
         const auto open  = errors.find('<');
         const auto close = errors.find('>', open);
-        outcome          = "error";
+        outcome          = fs::exists("out/.rupture-manifest.0") ?
+                               "error during the run" :
+                               "error";
         if (open != std::string::npos && close != std::string::npos &&
             close - open < 80)
           outcome += " naming " + errors.substr(open, close - open + 1);

@@ -305,6 +305,14 @@ namespace rupture
       start_loading_phase();
 
       /**
+       * Refuse a traction perturbation time function that is not finite at
+       * some time of the first @p duration seconds of the dynamic phase
+       * (sampled at 1001 times), before the run starts.
+       */
+      void
+      check_time_functions(const double duration) const;
+
+      /**
        * The number of nodes (over all ranks) that slipped in the last
        * assemble() where friction can still weaken: a bonded zone reaching
        * its strength.
