@@ -30,8 +30,25 @@ namespace rupture
       void
       check_cell_nodes(const std::string &file_name, const std::string &version)
       {
-        const int                             cell_type  = (dim == 2) ? 3 : 5;
-        const unsigned int                    n_vertices = (dim == 2) ? 4 : 8;
+        const int          cell_type  = (dim == 2) ? 3 : 5;
+        const unsigned int n_vertices = (dim == 2) ? 4 : 8;
+        // The volume cells of the other dimension (hexahedra in a 2-D run,
+        // quadrilaterals in a 3-D one) tell a mesh of the wrong dimension.
+        const int  other_type = (dim == 2) ? 5 : 3;
+        long       n_cells = 0, n_other = 0;
+        const auto check_dimension = [&]() {
+          AssertThrow(
+            !((dim == 2 && n_other > 0) ||
+              (dim == 3 && n_cells == 0 && n_other > 0)),
+            ExcMessage(
+              "The mesh file <" + file_name + "> holds " +
+              (dim == 2 ? std::string("hexahedra (a 3-D mesh)") :
+                          std::string("only quadrilaterals (a 2-D mesh, or "
+                                      "the surface of a 3-D one)")) +
+              ", but <Dimension> = " + std::to_string(dim) +
+              ". Allowed: a mesh of quadrilaterals with <Dimension> = 2, or "
+              "one of hexahedra with <Dimension> = 3."));
+        };
         std::ifstream                         in(file_name);
         std::map<long, std::array<double, 3>> nodes;
         std::string                           line;
@@ -112,8 +129,10 @@ namespace rupture
                         words >> number >> type >> n_tags;
                         for (long t = 0; t < n_tags; ++t)
                           words >> tag;
+                        n_other += (type == other_type);
                         if (type != cell_type)
                           continue;
+                        ++n_cells;
                         v.assign(n_vertices, 0);
                         for (auto &node : v)
                           words >> node;
@@ -129,6 +148,10 @@ namespace rupture
                         long entity_dim, entity, type, count;
                         in >> entity_dim >> entity >> type >> count;
                         std::getline(in, line);
+                        if (type == other_type)
+                          n_other += count;
+                        if (type == cell_type)
+                          n_cells += count;
                         for (long i = 0; i < count && std::getline(in, line);
                              ++i)
                           if (type == cell_type)
@@ -143,6 +166,7 @@ namespace rupture
                             }
                       }
                   }
+                check_dimension();
                 return;
               }
           }
@@ -291,6 +315,10 @@ namespace rupture
               }
             break;
           }
+      // The cells (their dimension, repeated or coincident nodes), before
+      // the boundary names are checked against them and before deal.II's
+      // reader sees them.
+      check_cell_nodes<dim>(file_name, version);
     }
 
 
@@ -303,7 +331,6 @@ namespace rupture
       Triangulation<dim> serial;
       GridIn<dim>        grid_in;
       grid_in.attach_triangulation(serial);
-      check_cell_nodes<dim>(file_name, version);
       std::ifstream in(file_name);
       try
         {

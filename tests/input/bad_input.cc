@@ -175,6 +175,13 @@ main(int argc, char **argv)
            "1 1 2 1 1 1 2\n2 3 2 2 1 " +
            nodes + "\n$EndElements\n";
   };
+  // One hexahedron: a 3-D mesh given to a 2-D run.
+  write("gmsh_hexahedron.msh",
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n"
+        "3 1 1 0\n4 0 1 0\n5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n$EndNodes\n"
+        "$Elements\n1\n1 5 2 1 1 1 2 3 4 5 6 7 8\n$EndElements\n");
+  write("gmsh_hexahedron.prm",
+        base + gmsh + "gmsh_hexahedron.msh\n  end\nend\n");
   write("gmsh_bow_tie.msh", quad("1 2 4 3"));
   write("gmsh_repeated_node.msh", quad("1 2 3 3"));
   write("gmsh_bow_tie.prm", base + gmsh + "gmsh_bow_tie.msh\n  end\nend\n");
@@ -289,6 +296,7 @@ main(int argc, char **argv)
          "Fault/Normal penalty=1e11",
          "--set",
          "Fault/Traction perturbation/Traction=log(0); 0"});
+  check("a 3-D Gmsh mesh in a 2-D run", {"gmsh_hexahedron.prm"});
   check("initial velocity that is not finite",
         {"valid.prm", "--set", "Initial conditions/Velocity=0; 1/0"});
   check("a quasi-static model that no boundary condition holds",
