@@ -268,6 +268,35 @@ namespace rupture
           result += (result.empty() ? "" : " ") + dealii::Utilities::trim(line);
       return result;
     }
+    std::string
+    user_message(const ExceptionBase &e)
+    {
+      // (By type: the name deal.II records is the expression as written,
+      // "ExcMessage(...)" or "dealii::ExcMessage(...)".)
+      if (dynamic_cast<const StandardExceptions::ExcMessage *>(&e))
+        return message_of(e);
+      // "... in function\n    <name>\n": the library function.
+      const std::string what     = e.what();
+      std::string       function = "an unknown function";
+      if (const auto at = what.find("in function\n"); at != std::string::npos)
+        {
+          const auto begin = what.find_first_not_of(" ", at + 12);
+          const auto end   = what.find('\n', begin);
+          if (begin != std::string::npos)
+            function = what.substr(begin, end - begin);
+        }
+      return "An internal check of the deal.II library failed (in " + function +
+             "): the input led the library outside what it handles. Most "
+             "often this is a mesh with degenerate or extreme cells "
+             "(coordinates far outside the model's size in metres, layers "
+             "much thinner than the cells, collapsed or inverted cells) or "
+             "extreme material constants or time steps. Check <Scene>, "
+             "<Material> and <Time integration>; if the input is sound, "
+             "please report this message.";
+    }
+
+
+
     void
     throw_if_any(const std::string &error, const MPI_Comm communicator)
     {

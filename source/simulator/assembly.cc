@@ -264,6 +264,27 @@ namespace rupture
 
 
   template <int dim>
+  double
+  Simulator<dim>::n_steps_of_phase(const double duration,
+                                   const double requested_time_step) const
+  {
+    const double n_steps = std::ceil(duration / requested_time_step - 1e-9);
+    if (!(n_steps >= 1 && n_steps <= 1e9))
+      {
+        std::ostringstream message;
+        message << "The phase of " << duration << " s with time steps of "
+                << requested_time_step << " s would take " << n_steps
+                << " steps. Allowed are 1 to 1e9 steps: check <Time "
+                   "integration/End time> and <Time step> (or those of its "
+                   "<Loading phase>).";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+    return n_steps;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::prepare_phase(const TimeIntegration::Scheme scheme,
                                 const double requested_time_step,
@@ -327,18 +348,7 @@ namespace rupture
                         "step> = 0 to use <Courant fraction> times it, or "
                         "use the implicit scheme."));
       }
-    const double n_steps = std::ceil(duration / time_step - 1e-9);
-    if (!(n_steps >= 1 && n_steps <= 1e9))
-      {
-        std::ostringstream message;
-        message << "The phase of " << duration << " s with time steps of "
-                << time_step << " s would take " << n_steps
-                << " steps. Allowed are 1 to 1e9 steps: check <Time "
-                   "integration/End time> and <Time step> (or those of its "
-                   "<Loading phase>).";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
-    time_step = duration / n_steps;
+    time_step = duration / n_steps_of_phase(duration, time_step);
 
     integrator = TimeIntegration::create(scheme, *this);
     integrator->prepare();

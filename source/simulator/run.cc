@@ -20,40 +20,6 @@ namespace rupture
 {
   namespace
   {
-    /**
-     * The message of an exception for the user. The program's own checks
-     * (ExcMessage) are messages already. Any other exception is one of the
-     * deal.II library's internal checks, whose text (the violated
-     * condition, a paragraph on deal.II's internals and a stack trace)
-     * means nothing to a user: it becomes a diagnosis that says what
-     * usually leads there, with the library function for a report.
-     */
-    std::string
-    diagnosis_of(const ExceptionBase &e)
-    {
-      const std::string name = e.get_exc_name() ? e.get_exc_name() : "";
-      if (name.rfind("ExcMessage", 0) == 0)
-        return Utilities::message_of(e);
-      // "... in function\n    <name>\n": the library function.
-      const std::string what     = e.what();
-      std::string       function = "an unknown function";
-      if (const auto at = what.find("in function\n"); at != std::string::npos)
-        {
-          const auto begin = what.find_first_not_of(" ", at + 12);
-          const auto end   = what.find('\n', begin);
-          if (begin != std::string::npos)
-            function = what.substr(begin, end - begin);
-        }
-      return "An internal check of the deal.II library failed (in " + function +
-             "): the input led the library outside what it handles. Most "
-             "often this is a mesh with degenerate or extreme cells "
-             "(coordinates far outside the model's size in metres, layers "
-             "much thinner than the cells, collapsed or inverted cells) or "
-             "extreme material constants or time steps. Check <Scene>, "
-             "<Material> and <Time integration>; if the input is sound, "
-             "please report this message.";
-    }
-
     const char *usage =
       "Usage: rupture [options] file.prm\n"
       "       mpirun -np N rupture [options] file.prm\n"
@@ -445,7 +411,7 @@ namespace rupture
     catch (const ExceptionBase &e)
       {
         if (root)
-          std::cerr << "\nError: " << diagnosis_of(e) << std::endl;
+          std::cerr << "\nError: " << Utilities::user_message(e) << std::endl;
         return 1;
       }
     catch (const std::exception &e)

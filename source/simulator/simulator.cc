@@ -77,17 +77,7 @@ namespace rupture
     // loading ends: its step count is checked now (with a step of its own;
     // the explicit scheme's automatic step needs the loaded state's phase).
     if (time_parameters.loading_phase && time_parameters.time_step > 0)
-      {
-        const double n_steps = std::ceil(
-          time_parameters.end_time / time_parameters.time_step - 1e-9);
-        std::ostringstream message;
-        message << "The dynamic phase of " << time_parameters.end_time
-                << " s with time steps of " << time_parameters.time_step
-                << " s would take " << n_steps
-                << " steps. Allowed are 1 to 1e9 steps: check <Time "
-                   "integration/End time> and <Time integration/Time step>.";
-        AssertThrow(n_steps >= 1 && n_steps <= 1e9, ExcMessage(message.str()));
-      }
+      n_steps_of_phase(time_parameters.end_time, time_parameters.time_step);
     // Time functions that are not finite somewhere in the run.
     if (fault)
       fault->check_time_functions(time_parameters.end_time);
@@ -406,7 +396,7 @@ namespace rupture
           {
             pcout << "*** Step " << step << ": t = " << std::scientific
                   << std::setprecision(4) << phase_time << " s";
-            if (dynamic_start != 0)
+            if (in_dynamic_phase)
               pcout << " (" << time << " s since the start of the run)";
             pcout << ", dt = " << std::setprecision(2) << time_step << " s";
             if (fault)

@@ -311,6 +311,14 @@ main(int argc, char **argv)
          "Fault/Normal penalty=1e30",
          "--set",
          "Fault/Tangential penalty=1e11"});
+  check("a scene length far below a millimetre",
+        {"valid.prm",
+         "--set",
+         "Scene/Model=northeast japan",
+         "--set",
+         "Scene/Northeast Japan/Crust thickness=1e-300"});
+  check("box coordinates beyond 1e9 m",
+        {"valid.prm", "--set", "Scene/Box/Upper corner=1e308, 1e308"});
   check("wave speeds above the speed of light",
         {"valid.prm", "--set", "Material/P-wave speed=4e8"});
   // The memory of the machine is in the message: only its parts are

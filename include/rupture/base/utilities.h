@@ -91,6 +91,18 @@ namespace rupture
     message_of(const ExceptionBase &e);
 
     /**
+     * What the user is shown for an exception that ends the run: the
+     * program's own checks (ExcMessage) are messages already (message_of());
+     * any other exception is one of the deal.II library's internal checks,
+     * whose text (the violated condition, a paragraph on deal.II's
+     * internals, a stack trace) means nothing to a user. It becomes a
+     * diagnosis that says what usually leads there, with the library
+     * function for a report.
+     */
+    std::string
+    user_message(const ExceptionBase &e);
+
+    /**
      * Collective: if @p error is not empty on any process of
      * @p communicator, every process throws the error of the lowest such
      * process (so that a check that fails on one process only stops all of

@@ -143,6 +143,11 @@ namespace rupture
      * its preconditioner (implicit, quasi-static), or the diagonal
      * (explicit, after the stability check here).
      */
+    /// The number of steps of at most @p requested_time_step in a phase of
+    /// @p duration; a count that is not 1 to 1e9 is an input error.
+    double
+    n_steps_of_phase(const double duration,
+                     const double requested_time_step) const;
     void
     prepare_phase(const TimeIntegration::Scheme scheme,
                   const double                  requested_time_step,
