@@ -211,8 +211,13 @@ namespace rupture
       friction_law->enable_weakening(true);
       dynamic_start      = time;
       forced_slip_active = true;
+      // Slip, rupture times and the ruptured area count from here on.
       for (auto &pair : pairs)
-        pair.slip_at_start = pair.slip;
+        {
+          pair.slip_at_start = pair.slip;
+          pair.rupture_time  = -1;
+          pair.rupture_rate  = 0;
+        }
       // Weakening counts the slip of the dynamic phase: a bonded zone
       // breaks when the dynamic phase starts.
       for (auto &pair : pairs)
@@ -264,6 +269,7 @@ namespace rupture
     {
       Statistics s;
       double     area = 0, moment = 0, normal = 0, shear = 0, total_area = 0;
+      double     ruptured[2] = {0, 0};
       unsigned   n_slip = 0, n_open = 0, unstable = 0;
       double     max_slip = 0, max_rate = 0;
       for (const auto &pair : pairs)
@@ -281,6 +287,11 @@ namespace rupture
           max_slip          = std::max(max_slip, slip);
           max_rate          = std::max(max_rate, pair.state.slip_rate);
           moment += pair.shear_modulus * pair.area * slip;
+          if (pair.rupture_time >= 0)
+            {
+              ruptured[0] += pair.area;
+              ruptured[1] += pair.area * slip;
+            }
           const double tn = pair.trial.traction * pair.normal;
           normal += pair.area * tn;
           shear += pair.area * (pair.trial.traction - tn * pair.normal).norm();
@@ -294,6 +305,9 @@ namespace rupture
           s.mean_shear_traction =
             dealii::Utilities::MPI::sum(shear, communicator) / total_area;
         }
+      dealii::Utilities::MPI::sum(ruptured, communicator, ruptured);
+      s.ruptured_area  = ruptured[0];
+      s.mean_slip      = ruptured[0] > 0 ? ruptured[1] / ruptured[0] : 0;
       s.n_nodes        = n_global_split;
       s.n_slipping     = dealii::Utilities::MPI::sum(n_slip, communicator);
       s.n_open         = dealii::Utilities::MPI::sum(n_open, communicator);

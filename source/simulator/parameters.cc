@@ -223,6 +223,7 @@ namespace rupture
     Scene::BoundaryConditions<dim>::declare_parameters(prm);
     TimeIntegration::Parameters::declare_parameters(prm);
     Solver::LinearSolver::declare_parameters(prm);
+    Termination::Criteria::declare_parameters(prm);
     prm.enter_subsection("Solver");
     {
       prm.declare_entry("Newton force tolerance",
@@ -464,6 +465,7 @@ namespace rupture
         fault_output_interval = fault_output->surface_interval(output_interval);
       }
     n_sides = fault ? 2 : 1;
+    termination.parse_parameters(prm, fault != nullptr);
 
     // Station and receiver files share the directory: two series with one
     // file name would silently lose one.

@@ -144,6 +144,47 @@ namespace rupture
   void
   Simulator<dim>::run()
   {
+    // However the run ends once its output directory is open, its
+    // summary.json says how.
+    try
+      {
+        run_sequence();
+      }
+    catch (const Interruption::Stopped &stopped)
+      {
+        write_summary("interrupted", stopped.what());
+        throw;
+      }
+    catch (const ExceptionBase &e)
+      {
+        if (output_prepared)
+          try
+            {
+              write_summary("failed", Utilities::user_message(e));
+            }
+          catch (...)
+            {}
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        if (output_prepared)
+          try
+            {
+              write_summary("failed", e.what());
+            }
+          catch (...)
+            {}
+        throw;
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_sequence()
+  {
     wall_time_start = MPI_Wtime();
     initialize_state();
     record_memory("initial state");
@@ -208,6 +249,9 @@ namespace rupture
     receivers->record(displacement, velocity, time);
     write_step_output(true);
 
+    if (termination.any())
+      pcout << termination.description() << "\n";
+    termination.start_phase(!time_parameters.loading_phase);
     if (time_parameters.loading_phase)
       {
         pcout << "*** Loading phase (quasi-static)\n";
@@ -215,7 +259,11 @@ namespace rupture
           fault->start_loading_phase();
         run_phase(time_parameters.loading_end_time,
                   fault && time_parameters.stop_loading_when_weakening);
-
+      }
+    // (A wall-clock limit may end the run in its loading phase.)
+    if (time_parameters.loading_phase &&
+        end_reason == Termination::Reason::end_time)
+      {
         // The end state of the loading phase is the initial state of the
         // dynamic phase: displacement, stress, fault tractions and slip
         // carry over; the body starts from rest (up to the boundary
@@ -254,9 +302,10 @@ namespace rupture
         // The first snapshots of the dynamic phase's time series: its
         // initial state, at its time 0.
         write_step_output(true);
+        termination.start_phase(true);
         run_phase(time_parameters.end_time, false);
       }
-    else
+    else if (!time_parameters.loading_phase)
       run_phase(time_parameters.end_time, false);
     // (The last step of a phase writes everything: run_phase() forces it.)
 
@@ -325,9 +374,13 @@ namespace rupture
         pcout << "   Energy balance error " << last[8] << " J\n";
         print_performance_summary();
         timer.print_summary();
-        pcout << "Results are in " << output_directory->absolute_name()
-              << std::endl;
       }
+    write_summary(end_reason == Termination::Reason::end_time ? "finished" :
+                                                                "ended early",
+                  end_message);
+    if (!test_mode)
+      pcout << "Results are in " << output_directory->absolute_name()
+            << std::endl;
   }
 
 
@@ -373,26 +426,33 @@ namespace rupture
 
         integrator->step();
         check_finite(displacement, "displacement");
-        {
-          // The displacement may still be finite when the energies computed
-          // from it overflow: that is a blow-up too, and no value that is
-          // not finite is ever written.
-          const std::vector<double> row = statistics_row();
-          const bool finite = std::all_of(row.begin(), row.end(), [](double x) {
-            return std::isfinite(x);
-          });
-          check_finite(displacement,
-                       "energy computed from the displacement",
-                       !finite);
-          check_explicit_energy_balance();
-          statistics.add_row(row);
-        }
+        // The displacement may still be finite when the energies computed
+        // from it overflow: that is a blow-up too, and no value that is
+        // not finite is ever written.
+        const std::vector<double> row = statistics_row();
+        check_finite(displacement,
+                     "energy computed from the displacement",
+                     !std::all_of(row.begin(), row.end(), [](double x) {
+                       return std::isfinite(x);
+                     }));
+        check_explicit_energy_balance();
+        statistics.add_row(row);
         if (fault)
           fault_output->record(*fault, phase_time);
         receivers->record(displacement, velocity, phase_time);
 
+        // Early ends, and the peak slip rate of the watched phase.
+        const Termination::Sample sample = termination_sample(row);
+        if (!time_parameters.loading_phase || in_dynamic_phase)
+          peak_slip_rate = std::max(peak_slip_rate, sample.max_slip_rate);
+        std::string               message;
+        const Termination::Reason reason =
+          termination.any() ? termination.check(sample, message) :
+                              Termination::Reason::end_time;
+        const bool ends_early = (reason != Termination::Reason::end_time);
+
         const bool stop = stop_when_weakening && fault->n_weakening() > 0;
-        if (step % screen_interval == 0 || i == n_steps || stop)
+        if (step % screen_interval == 0 || i == n_steps || stop || ends_early)
           {
             pcout << "*** Step " << step << ": t = " << std::scientific
                   << std::setprecision(4) << phase_time << " s";
@@ -425,7 +485,15 @@ namespace rupture
               }
             pcout << std::defaultfloat << std::endl;
           }
-        write_step_output(i == n_steps || stop);
+        write_step_output(i == n_steps || stop || ends_early);
+        if (ends_early)
+          {
+            end_reason  = reason;
+            end_message = message;
+            pcout << "*** The run ends early at t = " << std::setprecision(6)
+                  << phase_time << " s: " << message << std::endl;
+            return false;
+          }
         if (stop)
           {
             pcout << "   A bonded zone of the fault reached its strength at "

@@ -2,7 +2,9 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace rupture
 {
@@ -58,6 +60,140 @@ namespace rupture
     dealii::Utilities::System::get_memory_stats(stats);
     memory_by_stage.emplace_back(
       stage, dealii::Utilities::MPI::sum(1024. * stats.VmRSS, communicator));
+  }
+
+
+
+  namespace
+  {
+    /// @p text as a JSON string.
+    std::string
+    json_string(const std::string &text)
+    {
+      std::ostringstream s;
+      s << '"';
+      for (const char c : text)
+        if (c == '"' || c == '\\')
+          s << '\\' << c;
+        else if (c == '\n')
+          s << "\\n";
+        else if (static_cast<unsigned char>(c) < 0x20)
+          s << ' ';
+        else
+          s << c;
+      s << '"';
+      return s.str();
+    }
+
+    /// @p x as a JSON number (null if not finite).
+    std::string
+    json_number(const double x)
+    {
+      if (!std::isfinite(x))
+        return "null";
+      std::ostringstream s;
+      s << std::setprecision(10) << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  Termination::Sample
+  Simulator<dim>::termination_sample(const std::vector<double> &row) const
+  {
+    Termination::Sample s;
+    s.time           = phase_time;
+    s.kinetic_energy = row[4];
+    if (fault)
+      {
+        // The fault's columns of statistics_row(), after the L2 error.
+        const unsigned int f  = exact_displacement ? 11 : 10;
+        s.slipping_area       = row[f + 3];
+        s.max_slip            = row[f + 4];
+        s.max_slip_rate       = row[f + 5];
+        s.seismic_moment      = row[f + 6];
+        s.mean_shear_traction = row[f + 11];
+      }
+    if (termination.uses_wall_clock())
+      {
+        // Rank 0's clock, so that all ranks stop at the same step.
+        double seconds = MPI_Wtime() - wall_time_start;
+        MPI_Bcast(&seconds, 1, MPI_DOUBLE, 0, communicator);
+        s.wall_seconds = seconds;
+      }
+    return s;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_summary(const std::string &status,
+                                const std::string &message)
+  {
+    // A failure may be one rank's alone: then no collective call, and rank
+    // 0 writes what it knows.
+    const bool collective = (status != "failed");
+    const bool root =
+      dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    std::ostringstream out;
+    const std::string  end = (status == "finished" || status == "ended early") ?
+                               Termination::name(end_reason) :
+                               status;
+    out << "{\n"
+        << "  \"status\": " << json_string(status) << ",\n"
+        << "  \"end\": " << json_string(end) << ",\n"
+        << "  \"message\": " << json_string(message) << ",\n"
+        << "  \"dimension\": " << dim << ",\n"
+        << "  \"ranks\": " << n_ranks << ",\n"
+        << "  \"dofs\": " << dof_handler.n_dofs() << ",\n"
+        << "  \"steps\": " << step << ",\n"
+        << "  \"time\": " << json_number(phase_time) << ",\n"
+        << "  \"time since the start of the run\": " << json_number(time)
+        << ",\n"
+        << "  \"wall time\": "
+        << json_number(test_mode ? 0. : MPI_Wtime() - wall_time_start);
+    if (collective)
+      {
+        dealii::Utilities::System::MemoryStats stats;
+        dealii::Utilities::System::get_memory_stats(stats);
+        const double peak = 1024. * stats.VmHWM;
+        out << ",\n  \"peak memory, largest rank (B)\": "
+            << json_number(test_mode ?
+                             0. :
+                             dealii::Utilities::MPI::max(peak, communicator))
+            << ",\n  \"peak memory, all ranks (B)\": "
+            << json_number(test_mode ?
+                             0. :
+                             dealii::Utilities::MPI::sum(peak, communicator));
+        if (fault)
+          {
+            const Fault::Statistics f = fault->statistics();
+            out << ",\n  \"fault\": {\n"
+                << "    \"seismic moment\": " << json_number(f.seismic_moment)
+                << ",\n"
+                << "    \"moment magnitude\": "
+                << ((dim == 3 && f.seismic_moment > 0) ?
+                      json_number(2. / 3. *
+                                  (std::log10(f.seismic_moment) - 9.1)) :
+                      "null")
+                << ",\n"
+                << "    \"ruptured area\": " << json_number(f.ruptured_area)
+                << ",\n"
+                << "    \"mean slip\": " << json_number(f.mean_slip) << ",\n"
+                << "    \"max slip\": " << json_number(f.max_slip) << ",\n"
+                << "    \"peak slip rate\": " << json_number(peak_slip_rate)
+                << ",\n"
+                << "    \"nodes\": " << f.n_nodes << "\n  }";
+          }
+      }
+    out << "\n}\n";
+    if (root)
+      output_directory->write("summary.json", out.str());
   }
 
 

@@ -310,8 +310,8 @@ main(int argc, char **argv)
              "box/box-gravity.prm",
              {"Discretization/Initial global refinement=0",
               "Time integration/End time=0.04"}},
-            {"default",
-             "default/default.prm",
+            {"layered-box-3d",
+             "box/layered-box-3d.prm",
              {"Discretization/Initial global refinement=0",
               "Time integration/End time=0.1",
               "Output/Output interval=0.05"}}};

@@ -39,6 +39,11 @@ namespace rupture
       double       seismic_moment     = 0;
       double       frictional_energy  = 0;
       bool         unstable_softening = false;
+      /// The area where the rupture has passed (the slip rate exceeded
+      /// 1 mm/s since the start of the dynamic phase; m^2, m in 2-D), and
+      /// the mean slip over it (m).
+      double ruptured_area = 0;
+      double mean_slip     = 0;
       /// Area-weighted means of the normal traction (negative in
       /// compression) and of the magnitude of the shear traction (Pa).
       double mean_normal_traction = 0;

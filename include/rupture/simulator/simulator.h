@@ -15,6 +15,7 @@
 #include <rupture/output/volume_output.h>
 #include <rupture/scene/boundary_conditions.h>
 #include <rupture/scene/scene.h>
+#include <rupture/simulator/termination.h>
 #include <rupture/solver/linear_solver.h>
 #include <rupture/time_integration/interface.h>
 #include <rupture/time_integration/newmark.h>
@@ -163,6 +164,10 @@ namespace rupture
      */
     bool
     run_phase(const double duration, const bool stop_when_weakening);
+    /// The load sequence of run(), which adds the summary of a run that
+    /// stops by a signal or an error.
+    void
+    run_sequence();
     /**
      * Set the effective stiffness stiffness_factor K + mass_factor M +
      * absorbing_factor C_absorbing of the coming steps (Rayleigh damping
@@ -480,9 +485,27 @@ namespace rupture
     /// everywhere; the absolute time goes in a column of its own.
     double phase_time = 0;
     /// Whether the dynamic phase after a loading phase has started.
-    bool         in_dynamic_phase = false;
-    double       time_step;
-    double       stable_time_step;
+    bool in_dynamic_phase = false;
+    /// Early ends (the Termination subsection), why the run ended and the
+    /// largest slip rate of the dynamic phase, for summary.json.
+    Termination::Criteria termination;
+    Termination::Reason   end_reason = Termination::Reason::end_time;
+    std::string           end_message;
+    double                peak_slip_rate = 0;
+    /// The sample of the criteria after the current step (collective when
+    /// the wall clock is watched).
+    Termination::Sample
+    termination_sample(const std::vector<double> &row) const;
+    /**
+     * Write <output>/summary.json: how the run ended (@p status
+     * "finished", "ended early", "interrupted" or "failed", with
+     * @p message), its size and cost, and the fault's outcome. Collective
+     * unless @p status is "failed" (rank 0 then writes what it knows).
+     */
+    void
+           write_summary(const std::string &status, const std::string &message);
+    double time_step;
+    double stable_time_step;
     unsigned int step;
     VectorType   displacement;
     VectorType   velocity;
