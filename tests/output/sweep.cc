@@ -168,6 +168,29 @@ main(int argc, char **argv)
                   tests::file_exists("out-bad") ? "no" : "yes",
                   message.c_str());
     }
+  // A Latin-hypercube sample (listed only): one case in each quarter of
+  // each range (mu_d in steps of 0.025; log10 L_d in steps of 0.25), and a
+  // list of values that hold commas, separated by '|'.
+  write(
+    "latin.sweep",
+    head +
+      "sample = latin 4\nseed = 7\n"
+      "vary mu_d: Fault/Linear slip weakening/Dynamic friction "
+      "coefficient = uniform 0.5 0.6\n"
+      "vary L_d: Fault/Linear slip weakening/Slip-weakening "
+      "distance = loguniform 0.1 1\n"
+      "vary corner: Scene/Box/Lower corner = -20000, -10000 | -25000, -10000\n");
+  shell(sweep + "latin.sweep --dry-run > latin.txt 2>&1");
+  {
+    std::istringstream in(tests::read_file("latin.txt"));
+    std::string        line;
+    std::getline(in, line);
+    std::printf("latin sample: %s\n",
+                line.substr(0, line.find(" into")).c_str());
+    while (std::getline(in, line))
+      std::printf("%s\n", line.c_str());
+  }
+
   // Another design into the sweep's directory would mix two sweeps.
   write("other.sweep", head + "vary Material/Density = 2000, 3000\n");
   const int         code    = shell(sweep + "other.sweep > other.txt 2>&1");
