@@ -8,9 +8,16 @@ namespace rupture
   {
     namespace
     {
-      volatile std::sig_atomic_t signal_received = 0;
+      volatile std::sig_atomic_t signal_received     = 0;
+      volatile std::sig_atomic_t checkpoint_received = 0;
 
-      struct sigaction old_term, old_int;
+      struct sigaction old_term, old_int, old_usr1;
+
+      extern "C" void
+      request_checkpoint(const int)
+      {
+        checkpoint_received = 1;
+      }
 
       extern "C" void
       request_stop(const int signal)
@@ -38,6 +45,12 @@ namespace rupture
       action.sa_flags = SA_RESTART;
       sigaction(SIGTERM, &action, &old_term);
       sigaction(SIGINT, &action, &old_int);
+      checkpoint_received         = 0;
+      struct sigaction checkpoint = {};
+      checkpoint.sa_handler       = request_checkpoint;
+      sigemptyset(&checkpoint.sa_mask);
+      checkpoint.sa_flags = SA_RESTART;
+      sigaction(SIGUSR1, &checkpoint, &old_usr1);
     }
 
 
@@ -46,6 +59,17 @@ namespace rupture
     {
       sigaction(SIGTERM, &old_term, nullptr);
       sigaction(SIGINT, &old_int, nullptr);
+      sigaction(SIGUSR1, &old_usr1, nullptr);
+    }
+
+
+
+    bool
+    take_checkpoint_request()
+    {
+      const bool requested = checkpoint_received != 0;
+      checkpoint_received  = 0;
+      return requested;
     }
 
 

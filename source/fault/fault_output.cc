@@ -1,3 +1,4 @@
+#include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/fault/fault_output.h>
 
@@ -576,6 +577,36 @@ namespace rupture
               << " " << (rec.rupture_time < 0 ? 1e9 : rec.rupture_time) << "\n";
         }
       directory.write("rupture_time.dat", out.str());
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::save(std::ostream &out) const
+    {
+      BinaryIO::write(out, records);
+      BinaryIO::write(out, file_prefix);
+      BinaryIO::write(out, pvd_name);
+      BinaryIO::write(out, static_cast<std::uint64_t>(stations.size()));
+      for (const auto &s : stations)
+        BinaryIO::write(out, s.rows);
+    }
+
+
+
+    template <int dim>
+    void
+    FaultOutput<dim>::load(std::istream &in)
+    {
+      BinaryIO::read(in, records);
+      BinaryIO::read(in, file_prefix);
+      BinaryIO::read(in, pvd_name);
+      AssertThrow(BinaryIO::read_size(in) == stations.size(),
+                  ExcMessage("The checkpoint has another number of fault "
+                             "stations than <Fault/Output/Stations> gives."));
+      for (auto &s : stations)
+        BinaryIO::read(in, s.rows);
     }
 
 

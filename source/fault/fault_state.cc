@@ -1,6 +1,7 @@
 // The fault's state between steps: gathering node records, phases, time, and
 // statistics.
 
+#include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/fault/fault.h>
 
@@ -19,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <set>
@@ -358,6 +360,165 @@ namespace rupture
     Fault<dim>::n_welded_nodes() const
     {
       return n_global_welded;
+    }
+
+
+
+    namespace
+    {
+      template <int dim>
+      void
+      append(std::vector<double> &v, const Tensor<1, dim> &t)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          v.push_back(t[d]);
+      }
+
+      template <int dim>
+      Tensor<1, dim>
+      take(const std::vector<double> &v, unsigned int &i)
+      {
+        Tensor<1, dim> t;
+        for (unsigned int d = 0; d < dim; ++d)
+          t[d] = v.at(i++);
+        return t;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::save(std::ostream &out) const
+    {
+      BinaryIO::write(out,
+                      std::vector<double>{double(forced_slip_active),
+                                          dynamic_start,
+                                          current_time,
+                                          frictional_energy});
+      BinaryIO::write(out, static_cast<std::uint64_t>(pairs.size()));
+      std::vector<double> v;
+      for (const auto &pair : pairs)
+        {
+          v.clear();
+          for (unsigned int d = 0; d < dim; ++d)
+            v.push_back(pair.location[d]);
+          v.push_back(pair.state.slip_path);
+          v.push_back(pair.state.slip_rate);
+          v.push_back(pair.state.variables.size());
+          v.insert(v.end(),
+                   pair.state.variables.begin(),
+                   pair.state.variables.end());
+          append(v, pair.plastic_slip);
+          append(v, pair.slip);
+          append(v, pair.slip_velocity);
+          v.push_back(pair.rupture_time);
+          v.push_back(pair.rupture_rate);
+          append(v, pair.slip_at_start);
+          const auto &t = pair.trial;
+          append(v, t.traction);
+          append(v, t.trial_traction);
+          for (unsigned int d = 0; d < dim; ++d)
+            append(v, t.tangent[d]);
+          v.push_back(static_cast<double>(t.status));
+          v.push_back(t.slip_increment);
+          append(v, t.plastic_slip);
+          v.push_back(t.friction);
+          v.push_back(t.friction_derivative);
+          v.push_back(t.unstable_softening);
+          append(v, pair.trial_slip);
+          BinaryIO::write(out, v);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::load(const std::vector<std::string> &files)
+    {
+      const unsigned int rank =
+        dealii::Utilities::MPI::this_mpi_process(communicator);
+      const bool same_ranks =
+        files.size() == dealii::Utilities::MPI::n_mpi_processes(communicator);
+      std::map<std::array<double, dim>, std::vector<double>> saved;
+      double                                                 energy = 0;
+      for (unsigned int f = 0; f < files.size(); ++f)
+        {
+          std::ifstream in(files[f], std::ios::binary);
+          AssertThrow(in,
+                      ExcMessage("The checkpoint file <" + files[f] +
+                                 "> cannot be read."));
+          std::vector<double> clock;
+          BinaryIO::read(in, clock);
+          AssertThrow(clock.size() == 4,
+                      ExcMessage("The checkpoint file <" + files[f] +
+                                 "> is damaged."));
+          forced_slip_active = clock[0] != 0;
+          dynamic_start      = clock[1];
+          current_time       = clock[2];
+          // The frictional energy is a sum over the ranks: on the same
+          // ranks each keeps its own part (the same sums to the last
+          // digit), else rank 0 takes the whole.
+          if (same_ranks ? f == rank : rank == 0)
+            energy += clock[3];
+          const std::uint64_t n = BinaryIO::read_size(in);
+          std::vector<double> v;
+          for (std::uint64_t k = 0; k < n; ++k)
+            {
+              BinaryIO::read(in, v);
+              AssertThrow(v.size() > dim,
+                          ExcMessage("The checkpoint file <" + files[f] +
+                                     "> is damaged."));
+              std::array<double, dim> key;
+              std::copy(v.begin(), v.begin() + dim, key.begin());
+              saved[key] = v;
+            }
+        }
+      frictional_energy = energy;
+      for (auto &pair : pairs)
+        {
+          std::array<double, dim> key;
+          for (unsigned int d = 0; d < dim; ++d)
+            key[d] = pair.location[d];
+          const auto at = saved.find(key);
+          if (at == saved.end())
+            {
+              std::ostringstream where;
+              where << pair.location;
+              AssertThrow(false,
+                          ExcMessage("The checkpoint has no fault state at "
+                                     "the node pair at (" +
+                                     where.str() +
+                                     "): it was written for another mesh "
+                                     "or fault."));
+            }
+          const std::vector<double> &v = at->second;
+          unsigned int               i = dim;
+          pair.state.slip_path         = v.at(i++);
+          pair.state.slip_rate         = v.at(i++);
+          pair.state.variables.resize(static_cast<unsigned int>(v.at(i++)));
+          for (auto &x : pair.state.variables)
+            x = v.at(i++);
+          pair.plastic_slip  = take<dim>(v, i);
+          pair.slip          = take<dim>(v, i);
+          pair.slip_velocity = take<dim>(v, i);
+          pair.rupture_time  = v.at(i++);
+          pair.rupture_rate  = v.at(i++);
+          pair.slip_at_start = take<dim>(v, i);
+          auto &t            = pair.trial;
+          t.traction         = take<dim>(v, i);
+          t.trial_traction   = take<dim>(v, i);
+          for (unsigned int d = 0; d < dim; ++d)
+            t.tangent[d] = take<dim>(v, i);
+          t.status              = static_cast<ContactStatus>(v.at(i++));
+          t.slip_increment      = v.at(i++);
+          t.plastic_slip        = take<dim>(v, i);
+          t.friction            = v.at(i++);
+          t.friction_derivative = v.at(i++);
+          t.unstable_softening  = v.at(i++) != 0;
+          pair.trial_slip       = take<dim>(v, i);
+        }
     }
 
 

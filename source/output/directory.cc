@@ -138,8 +138,9 @@ namespace rupture
 
 
     void
-    Directory::open()
+    Directory::open(const bool continue_earlier_run)
     {
+      continuing = continue_earlier_run;
       const bool root =
         dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
       std::string error = root ? open_on_root() : std::string();
@@ -220,9 +221,11 @@ namespace rupture
         return "The lock file <" + lock_path + "> cannot be written (" +
                std::strerror(errno) + ").";
 
-      remove_earlier_run();
+      if (!continuing)
+        remove_earlier_run();
 
-      manifest.open(directory + "/" + manifest_name(0), std::ios::trunc);
+      manifest.open(directory + "/" + manifest_name(0),
+                    continuing ? std::ios::app : std::ios::trunc);
       if (!manifest)
         return "The manifest <" + directory + "/" + manifest_name(0) +
                "> cannot be written: is the output directory writable?";
@@ -301,7 +304,7 @@ namespace rupture
               const unsigned int rank =
                 dealii::Utilities::MPI::this_mpi_process(communicator);
               manifest.open(directory + "/" + manifest_name(rank),
-                            std::ios::trunc);
+                            continuing ? std::ios::app : std::ios::trunc);
               AssertThrow(manifest,
                           ExcMessage("The manifest <" + directory + "/" +
                                      manifest_name(rank) +

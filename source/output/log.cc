@@ -30,10 +30,10 @@ namespace rupture
 
 
     void
-    Log::attach_file(const std::string &filename)
+    Log::attach_file(const std::string &filename, const bool append)
     {
       out->flush();
-      buffer.file.open(filename);
+      buffer.file.open(filename, append ? std::ios::app : std::ios::out);
       if (buffer.file)
         {
           buffer.file << buffer.pending.str();

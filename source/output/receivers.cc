@@ -1,3 +1,4 @@
+#include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/output/receivers.h>
 
@@ -171,6 +172,46 @@ namespace rupture
               out << "\n";
             }
           directory.write(r.name + ".dat", out.str());
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Receivers<dim>::save(std::ostream &out) const
+    {
+      BinaryIO::write(out, static_cast<std::uint64_t>(receivers.size()));
+      for (const auto &r : receivers)
+        {
+          std::vector<std::vector<double>> rows;
+          for (const auto &row : r.rows)
+            rows.emplace_back(row.begin(), row.end());
+          BinaryIO::write(out, rows);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Receivers<dim>::load(std::istream &in)
+    {
+      AssertThrow(BinaryIO::read_size(in) == receivers.size(),
+                  ExcMessage("The checkpoint has another number of "
+                             "receivers than <Output/Receivers> gives."));
+      for (auto &r : receivers)
+        {
+          std::vector<std::vector<double>> rows;
+          BinaryIO::read(in, rows);
+          r.rows.resize(rows.size());
+          for (unsigned int i = 0; i < rows.size(); ++i)
+            {
+              AssertThrow(rows[i].size() == r.rows[i].size(),
+                          ExcMessage("A receiver row of the checkpoint has "
+                                     "the wrong length."));
+              std::copy(rows[i].begin(), rows[i].end(), r.rows[i].begin());
+            }
         }
     }
 

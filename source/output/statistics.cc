@@ -1,3 +1,4 @@
+#include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/output/statistics.h>
 
@@ -53,5 +54,27 @@ namespace rupture
         }
       Utilities::write_file_atomically(filename, out.str());
     }
+    void
+    Statistics::save(std::ostream &out) const
+    {
+      BinaryIO::write(out, static_cast<std::uint64_t>(columns.size()));
+      for (const auto &c : columns)
+        BinaryIO::write(out, c);
+      BinaryIO::write(out, rows);
+    }
+
+
+
+    void
+    Statistics::load(std::istream &in)
+    {
+      columns.resize(BinaryIO::read_size(in));
+      for (auto &c : columns)
+        BinaryIO::read(in, c);
+      BinaryIO::read(in, rows);
+    }
+
+
+
   } // namespace Output
 } // namespace rupture

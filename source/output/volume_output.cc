@@ -1,3 +1,4 @@
+#include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/output/vtu_file.h>
@@ -424,6 +425,28 @@ namespace rupture
       this->file_prefix = file_prefix;
       this->pvd_name    = pvd_name;
       records.clear();
+    }
+
+
+
+    template <int dim>
+    void
+    VolumeOutput<dim>::save(std::ostream &out) const
+    {
+      BinaryIO::write(out, records);
+      BinaryIO::write(out, file_prefix);
+      BinaryIO::write(out, pvd_name);
+    }
+
+
+
+    template <int dim>
+    void
+    VolumeOutput<dim>::load(std::istream &in)
+    {
+      BinaryIO::read(in, records);
+      BinaryIO::read(in, file_prefix);
+      BinaryIO::read(in, pvd_name);
     }
 
 

@@ -224,6 +224,27 @@ namespace rupture
     TimeIntegration::Parameters::declare_parameters(prm);
     Solver::LinearSolver::declare_parameters(prm);
     Termination::Criteria::declare_parameters(prm);
+
+    prm.enter_subsection("Checkpoint");
+    {
+      prm.declare_entry(
+        "Interval",
+        "0",
+        Patterns::Integer(0),
+        "Write a checkpoint every this many steps, from which 'rupture "
+        "file.prm --resume' continues the run (doc/manual.md, \"Checkpoints "
+        "and restart\"). 0: not by steps. With checkpoints on (this or "
+        "<Wall-clock interval>), one is also written at the end of the run "
+        "and when SIGTERM or SIGINT stops it. The two newest are kept, in "
+        "<Output directory>/checkpoint/.");
+      prm.declare_entry("Wall-clock interval",
+                        "0",
+                        Patterns::Double(0),
+                        "Write a checkpoint every this many minutes of "
+                        "wall-clock time (checked after every step). 0: not "
+                        "by time.");
+    }
+    prm.leave_subsection();
     prm.enter_subsection("Solver");
     {
       prm.declare_entry("Newton force tolerance",
@@ -466,6 +487,20 @@ namespace rupture
       }
     n_sides = fault ? 2 : 1;
     termination.parse_parameters(prm, fault != nullptr);
+    prm.enter_subsection("Checkpoint");
+    checkpoint_interval = prm.get_integer("Interval");
+    checkpoint_minutes  = prm.get_double("Wall-clock interval");
+    prm.leave_subsection();
+    AssertThrow(std::isfinite(checkpoint_minutes),
+                ExcMessage("<Checkpoint/Wall-clock interval> must be a "
+                           "finite number of minutes (0: off)."));
+    // (Not yet: the loading phase's hand-over to the dynamic phase.)
+    AssertThrow(!(checkpoints_enabled() || resume) ||
+                  !time_parameters.loading_phase,
+                ExcMessage("Checkpoints are not available yet for runs with "
+                           "a <Time integration/Loading phase>. Set "
+                           "<Checkpoint/Interval> and <Checkpoint/Wall-clock "
+                           "interval> to 0."));
 
     // Station and receiver files share the directory: two series with one
     // file name would silently lose one.

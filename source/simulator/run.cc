@@ -37,7 +37,10 @@ namespace rupture
       "  --set \"Section/Entry=value\"\n"
       "                             override one entry of file.prm; may be\n"
       "                             repeated, e.g. for parameter sweeps:\n"
-      "                             --set \"Time integration/End time=2\"\n";
+      "                             --set \"Time integration/End time=2\"\n"
+      "  --resume                   continue the run of file.prm from the newest\n"
+      "                             checkpoint in its output directory\n"
+      "                             (<Checkpoint/Interval>)\n";
 
 
 
@@ -229,9 +232,11 @@ namespace rupture
 
     template <int dim>
     void
-    run_simulation(ParameterHandler &prm, const MPI_Comm communicator)
+    run_simulation(ParameterHandler &prm,
+                   const MPI_Comm    communicator,
+                   const bool        resume)
     {
-      Simulator<dim> simulator(communicator, prm);
+      Simulator<dim> simulator(communicator, prm, resume);
       simulator.run();
     }
   } // namespace
@@ -249,6 +254,7 @@ namespace rupture
         std::string              parameter_file;
         std::string              print_format;
         std::vector<std::string> overrides;
+        bool                     resume = false;
         for (unsigned int i = 0; i < arguments.size(); ++i)
           {
             const std::string &arg = arguments[i];
@@ -279,6 +285,8 @@ namespace rupture
                                            "and 'prm'."));
                   }
               }
+            else if (arg == "--resume")
+              resume = true;
             else if (arg == "--set")
               {
                 AssertThrow(i + 1 < arguments.size(),
@@ -293,8 +301,8 @@ namespace rupture
                 AssertThrow(false,
                             ExcMessage("Unknown option <" + arg +
                                        ">. Allowed are --help, "
-                                       "--print-parameters and --set; see "
-                                       "'rupture --help'."));
+                                       "--print-parameters, --set and "
+                                       "--resume; see 'rupture --help'."));
               }
             else
               {
@@ -398,9 +406,9 @@ namespace rupture
         const Interruption::Handlers handlers;
         const unsigned int           dimension = prm.get_integer("Dimension");
         if (dimension == 2)
-          run_simulation<2>(prm, communicator);
+          run_simulation<2>(prm, communicator, resume);
         else
-          run_simulation<3>(prm, communicator);
+          run_simulation<3>(prm, communicator, resume);
       }
     catch (const Interruption::Stopped &stopped)
       {

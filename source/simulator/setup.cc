@@ -113,8 +113,14 @@ namespace rupture
                     n_nodes);
     for (const auto &cell : triangulation.active_cell_iterators())
       materials.check_material_id(cell->material_id());
-    triangulation.refine_global(n_global_refinements);
-    for (unsigned int level = 0; level < n_region_refinements; ++level)
+    // A continued run takes the checkpoint's refined mesh (and its
+    // partition onto this run's ranks), with the fields attached.
+    if (resume)
+      triangulation.load(resume_from + "/mesh");
+    else
+      triangulation.refine_global(n_global_refinements);
+    for (unsigned int level = 0; level < (resume ? 0 : n_region_refinements);
+         ++level)
       {
         std::string bad_centre;
         for (const auto &cell : triangulation.active_cell_iterators())

@@ -23,7 +23,9 @@
 namespace rupture
 {
   template <int dim>
-  Simulator<dim>::Simulator(const MPI_Comm communicator, ParameterHandler &prm)
+  Simulator<dim>::Simulator(const MPI_Comm    communicator,
+                            ParameterHandler &prm,
+                            const bool        resume)
     : communicator(communicator)
     , pcout(log.stream(),
             dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
@@ -50,7 +52,24 @@ namespace rupture
     , wall_time_start(0)
     , next_output_time(0)
   {
+    this->resume = resume;
     parse_parameters(prm);
+    if (resume)
+      {
+        // The newest complete checkpoint of this output directory, written
+        // with the same parameters (before anything is built).
+        resume_from = newest_checkpoint();
+        AssertThrow(!resume_from.empty(),
+                    ExcMessage("--resume: the output directory <" +
+                               output_directory->name() +
+                               "> holds no complete checkpoint "
+                               "(checkpoint/step-*/state). Checkpoints are "
+                               "written when <Checkpoint/Interval> or "
+                               "<Checkpoint/Wall-clock interval> is set; run "
+                               "without --resume to start anew."));
+        check_checkpoint_parameters(prm);
+        pcout << "Continuing from the checkpoint " << resume_from << "\n";
+      }
 
     pcout << "rupture: " << dim << "-D, scheme "
           << time_parameters.scheme_name() << ", "
@@ -116,13 +135,14 @@ namespace rupture
   Simulator<dim>::prepare_output_directory(ParameterHandler &prm)
   {
     // Collective: the lock, and the removal of the earlier run's files.
-    output_directory->open();
+    output_directory->open(resume);
+    std::ostringstream parameters;
+    prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+    parameters_text = parameters.str();
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        log.attach_file(output_directory->record("log.txt"));
-        std::ostringstream parameters;
-        prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-        output_directory->write("parameters.prm", parameters.str());
+        log.attach_file(output_directory->record("log.txt"), resume);
+        output_directory->write("parameters.prm", parameters_text);
       }
     // Where the results go (not in test mode: the path is the machine's).
     if (!test_mode)
@@ -185,7 +205,20 @@ namespace rupture
   void
   Simulator<dim>::run_sequence()
   {
-    wall_time_start = MPI_Wtime();
+    wall_time_start      = MPI_Wtime();
+    last_checkpoint_wall = wall_time_start;
+    if (resume)
+      {
+        // The state of the checkpoint's step, and the rest of the run.
+        read_checkpoint();
+        if (termination.any())
+          pcout << termination.description() << "\n";
+        pcout << "*** Continuing after step " << step
+              << " (t = " << std::setprecision(6) << phase_time << " s)\n";
+        run_phase(time_parameters.end_time, false, steps_in_phase);
+        finish_run();
+        return;
+      }
     initialize_state();
     record_memory("initial state");
 
@@ -308,7 +341,15 @@ namespace rupture
     else if (!time_parameters.loading_phase)
       run_phase(time_parameters.end_time, false);
     // (The last step of a phase writes everything: run_phase() forces it.)
+    finish_run();
+  }
 
+
+
+  template <int dim>
+  void
+  Simulator<dim>::finish_run()
+  {
     const auto &last = statistics.last_row();
     pcout << std::scientific << std::setprecision(6)
           << "Final state at t = " << phase_time << " s";
@@ -387,13 +428,18 @@ namespace rupture
 
   template <int dim>
   bool
-  Simulator<dim>::run_phase(const double duration,
-                            const bool   stop_when_weakening)
+  Simulator<dim>::run_phase(const double       duration,
+                            const bool         stop_when_weakening,
+                            const unsigned int steps_done)
   {
     // Steps are counted in the phase's own time: after a long loading
     // phase the absolute time has lost the digits of a short dynamic
-    // phase (3e9 s + 0.3 s).
-    const double       start    = time;
+    // phase (3e9 s + 0.3 s). A run continued from a checkpoint goes on
+    // from the step after steps_done of the phase that started at
+    // phase_start_time.
+    const double start          = (steps_done > 0) ? phase_start_time : time;
+    phase_start_time            = start;
+    steps_in_phase              = steps_done;
     const double       end_time = start + duration;
     const unsigned int n_steps =
       static_cast<unsigned int>(std::ceil(duration / time_step - 1e-9));
@@ -413,10 +459,11 @@ namespace rupture
       }
     } loop_timer{time_loop_seconds, loop_start};
 
-    for (unsigned int i = 1; i <= n_steps; ++i)
+    for (unsigned int i = steps_done + 1; i <= n_steps; ++i)
       {
         ++step;
-        time = (i == n_steps) ? end_time : start + i * time_step;
+        steps_in_phase = i;
+        time           = (i == n_steps) ? end_time : start + i * time_step;
         // The time since the start of the dynamic phase, without the
         // round-off of the absolute time after a long loading phase.
         phase_time =
@@ -486,6 +533,22 @@ namespace rupture
             pcout << std::defaultfloat << std::endl;
           }
         write_step_output(i == n_steps || stop || ends_early);
+        if (checkpoints_enabled())
+          {
+            // Every <Interval> steps, every <Wall-clock interval> minutes
+            // (rank 0's clock) and at the end of the run.
+            // SIGUSR1 asks for one now (on any rank: decided together).
+            double state[2] = {(MPI_Wtime() - last_checkpoint_wall) / 60,
+                               Interruption::take_checkpoint_request() ? 1. :
+                                                                         0.};
+            MPI_Bcast(&state[0], 1, MPI_DOUBLE, 0, communicator);
+            MPI_Allreduce(
+              MPI_IN_PLACE, &state[1], 1, MPI_DOUBLE, MPI_MAX, communicator);
+            if ((checkpoint_interval > 0 && step % checkpoint_interval == 0) ||
+                (checkpoint_minutes > 0 && state[0] >= checkpoint_minutes) ||
+                state[1] > 0 || i == n_steps || ends_early)
+              write_checkpoint();
+          }
         if (ends_early)
           {
             end_reason  = reason;
@@ -662,6 +725,8 @@ namespace rupture
 
     if (signal != 0)
       {
+        if (checkpoints_enabled())
+          write_checkpoint();
         std::ostringstream what;
         what << "Stopped by " << Interruption::signal_name(signal)
              << " after step " << step << " (t = " << phase_time

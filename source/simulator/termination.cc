@@ -1,3 +1,4 @@
+#include <rupture/base/binary_io.h>
 #include <rupture/simulator/termination.h>
 
 #include <deal.II/base/exceptions.h>
@@ -324,5 +325,60 @@ namespace rupture
         }
       return Reason::end_time;
     }
+    void
+    Criteria::save(std::ostream &out) const
+    {
+      std::vector<double> flags = {double(watched),
+                                   double(rupture_began),
+                                   quiet_since,
+                                   phase_start,
+                                   double(started),
+                                   largest[0],
+                                   largest[1],
+                                   largest[2]};
+      BinaryIO::write(out, flags);
+      std::vector<std::vector<double>> samples;
+      for (const Sample &s : window)
+        samples.push_back({s.time,
+                           s.wall_seconds,
+                           s.kinetic_energy,
+                           s.max_slip_rate,
+                           s.mean_shear_traction,
+                           s.seismic_moment,
+                           s.max_slip,
+                           s.slipping_area});
+      BinaryIO::write(out, samples);
+    }
+
+
+
+    void
+    Criteria::load(std::istream &in)
+    {
+      std::vector<double> flags;
+      BinaryIO::read(in, flags);
+      AssertThrow(flags.size() == 8,
+                  ExcMessage("The checkpoint's termination state is "
+                             "damaged."));
+      watched       = flags[0] != 0;
+      rupture_began = flags[1] != 0;
+      quiet_since   = flags[2];
+      phase_start   = flags[3];
+      started       = flags[4] != 0;
+      for (unsigned int k = 0; k < 3; ++k)
+        largest[k] = flags[5 + k];
+      std::vector<std::vector<double>> samples;
+      BinaryIO::read(in, samples);
+      window.clear();
+      for (const auto &v : samples)
+        {
+          AssertThrow(v.size() == 8,
+                      ExcMessage("The checkpoint's termination state is "
+                                 "damaged."));
+          window.push_back(
+            Sample{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7]});
+        }
+    }
+
   } // namespace Termination
 } // namespace rupture

@@ -7,7 +7,8 @@
 namespace rupture
 {
   /**
-   * A clean stop on SIGTERM and SIGINT: the signal only sets a flag; the
+   * A clean stop on SIGTERM and SIGINT, and a checkpoint on SIGUSR1: the
+   * signal only sets a flag; the
    * time loop looks at it after every step (together on all ranks), writes
    * everything that is pending and throws Interruption::Stopped, and the
    * program exits with the conventional code 128 + signal. A second SIGINT
@@ -35,6 +36,13 @@ namespace rupture
      */
     int
     requested();
+
+    /**
+     * Whether SIGUSR1 arrived since the last call (and forget it): a
+     * request for a checkpoint now, after which the run goes on.
+     */
+    bool
+    take_checkpoint_request();
 
     /**
      * The name of a signal ("SIGTERM").

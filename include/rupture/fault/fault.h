@@ -16,9 +16,11 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <iosfwd>
 #include <map>
 #include <memory>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace rupture
@@ -308,6 +310,19 @@ namespace rupture
        */
       void
       start_loading_phase();
+
+      /**
+       * For checkpoints: save() writes this rank's node pairs (their
+       * committed state, keyed by location) and the fault's clock; load()
+       * reads the files that all ranks of the checkpointed run wrote and
+       * gives each of its own pairs the state saved at its location, so a
+       * run may continue on another number of ranks. Throws if a pair has
+       * no saved state (the mesh or the fault differ).
+       */
+      void
+      save(std::ostream &out) const;
+      void
+      load(const std::vector<std::string> &files);
 
       /**
        * Refuse a traction perturbation time function that is not finite at

@@ -6,6 +6,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <vector>
@@ -31,6 +32,14 @@ namespace rupture
     class FaultOutput
     {
     public:
+      /**
+       * Write what a checkpoint keeps of this object to @p out, and read it
+       * back (doc/manual.md, "Checkpoints and restart").
+       */
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
       static void
       declare_parameters(ParameterHandler &prm);
 

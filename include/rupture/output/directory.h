@@ -61,10 +61,12 @@ namespace rupture
        * Create the directory, take its lock and remove the files of the
        * earlier run. Collective: if rank 0 cannot do any of that, every rank
        * throws the same message. Called once every check of the input has
-       * passed.
+       * passed. A run that continues from a checkpoint
+       * (@p continue_earlier_run) keeps the earlier run's files and adds to
+       * its manifests instead.
        */
       void
-      open();
+      open(const bool continue_earlier_run = false);
 
       /**
        * The name as the user gave it, and as an absolute path.
@@ -108,8 +110,9 @@ namespace rupture
 
       const std::string     directory;
       const MPI_Comm        communicator;
-      bool                  opened  = false;
-      int                   lock_fd = -1;
+      bool                  opened     = false;
+      bool                  continuing = false;
+      int                   lock_fd    = -1;
       std::ofstream         manifest;
       std::set<std::string> recorded;
     };

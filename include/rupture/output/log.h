@@ -33,7 +33,7 @@ namespace rupture
        * everything written so far.
        */
       void
-      attach_file(const std::string &filename);
+      attach_file(const std::string &filename, const bool append = false);
 
     private:
       class TeeBuffer : public std::streambuf

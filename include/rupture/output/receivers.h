@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,14 @@ namespace rupture
     class Receivers
     {
     public:
+      /**
+       * Write what a checkpoint keeps of this object to @p out, and read it
+       * back (doc/manual.md, "Checkpoints and restart").
+       */
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
       /**
        * Parse 'name: x, y[, z]; ...' (<Output/Receivers>). Throws with a
        * message naming the entry on malformed input.

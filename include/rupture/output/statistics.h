@@ -1,6 +1,7 @@
 #ifndef rupture_output_statistics_h
 #define rupture_output_statistics_h
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,14 @@ namespace rupture
     class Statistics
     {
     public:
+      /**
+       * Write what a checkpoint keeps of this object to @p out, and read it
+       * back (doc/manual.md, "Checkpoints and restart").
+       */
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
       /**
        * Set the column names (with units). Must be called before add_row().
        */

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <functional>
+#include <iosfwd>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,6 +46,14 @@ namespace rupture
     class VolumeOutput
     {
     public:
+      /**
+       * Write what a checkpoint keeps of this object to @p out, and read it
+       * back (doc/manual.md, "Checkpoints and restart").
+       */
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
       /**
        * What is compressed (zlib's fastest level): nothing; the mesh
        * (points, cells) and the integer cell fields only; or also the

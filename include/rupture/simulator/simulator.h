@@ -79,7 +79,13 @@ namespace rupture
   public:
     using VectorType = TrilinosWrappers::MPI::Vector;
 
-    Simulator(const MPI_Comm communicator, ParameterHandler &prm);
+    /**
+     * Set up a run from @p prm; with @p resume, continue the run of the
+     * same parameters from the newest checkpoint in its output directory.
+     */
+    Simulator(const MPI_Comm    communicator,
+              ParameterHandler &prm,
+              const bool        resume = false);
     ~Simulator();
 
     /**
@@ -163,11 +169,48 @@ namespace rupture
      * returns false if a stop criterion ended the phase early.
      */
     bool
-    run_phase(const double duration, const bool stop_when_weakening);
+    run_phase(const double       duration,
+              const bool         stop_when_weakening,
+              const unsigned int steps_done = 0);
     /// The load sequence of run(), which adds the summary of a run that
     /// stops by a signal or an error.
     void
     run_sequence();
+    /// The end of a run: the final state on the screen, summary.json.
+    void
+    finish_run();
+
+    // Checkpoints (checkpoint.cc).
+    /// <Checkpoint/Interval> (steps) and <Wall-clock interval> (minutes);
+    /// both 0: no checkpoints.
+    unsigned int checkpoint_interval  = 0;
+    double       checkpoint_minutes   = 0;
+    double       last_checkpoint_wall = 0;
+    bool         resume               = false;
+    /// The checkpoint a resumed run continues from (a directory).
+    std::string resume_from;
+    /// The run's parameters as written to parameters.prm (ShortPRM).
+    std::string parameters_text;
+    /// The current phase's start time and the steps done in it.
+    double       phase_start_time = 0;
+    unsigned int steps_in_phase   = 0;
+    bool
+    checkpoints_enabled() const
+    {
+      return checkpoint_interval > 0 || checkpoint_minutes > 0;
+    }
+    /// The newest complete checkpoint in the output directory, or "".
+    std::string
+    newest_checkpoint() const;
+    /// Refuse a checkpoint written with other parameters, naming the entry.
+    void
+    check_checkpoint_parameters(ParameterHandler &prm) const;
+    /// Write a checkpoint of the state after the current step. Collective.
+    void
+    write_checkpoint();
+    /// Restore the state after the mesh and the DoFs are set up.
+    void
+    read_checkpoint();
     /**
      * Set the effective stiffness stiffness_factor K + mass_factor M +
      * absorbing_factor C_absorbing of the coming steps (Rayleigh damping

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <deque>
+#include <iosfwd>
 #include <string>
 
 namespace rupture
@@ -105,6 +106,15 @@ namespace rupture
        */
       Reason
       check(const Sample &sample, std::string &message);
+
+      /**
+       * Write what the criteria remember of earlier steps, and read it
+       * back (checkpoints).
+       */
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
 
     private:
       double slip_rate_threshold = 1e-3;

@@ -1,0 +1,371 @@
+// Checkpoints and restart: the state after a step, written so that a run
+// stopped at any moment continues from its last checkpoint (doc/manual.md,
+// "Checkpoints and restart").
+//
+// A checkpoint is a directory <output>/checkpoint/step-NNNNNNNNN:
+// - mesh, mesh_fixed.data, mesh.info: the p4est forest with the fields
+//   attached (deal.II's Triangulation::save() and SolutionTransfer), which
+//   load on any number of ranks;
+// - fault.N: the fault node pairs that rank N owned, keyed by location;
+// - state: rank 0's scalars, the parameters of the run, the statistics,
+//   the output series (snapshot lists, station and receiver rows) and the
+//   termination criteria's memory.
+// It is written into checkpoint/writing and renamed when complete, so a
+// run killed while writing leaves the earlier checkpoints intact; the two
+// newest are kept.
+
+#include <rupture/base/binary_io.h>
+#include <rupture/base/utilities.h>
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace rupture
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    const char *const format_name = "rupture checkpoint 1";
+
+    /// The entries of a parameter file printed as ShortPRM, by path.
+    std::map<std::string, std::string>
+    entries_of(const std::string &text)
+    {
+      std::map<std::string, std::string> entries;
+      std::vector<std::string>           path;
+      std::istringstream                 in(text);
+      std::string                        line;
+      while (std::getline(in, line))
+        {
+          line = dealii::Utilities::trim(line);
+          if (line.rfind("subsection ", 0) == 0)
+            path.push_back(dealii::Utilities::trim(line.substr(11)));
+          else if (line == "end" && !path.empty())
+            path.pop_back();
+          else if (line.rfind("set ", 0) == 0)
+            {
+              const auto  eq   = line.find('=');
+              std::string name = dealii::Utilities::trim(line.substr(
+                4, eq == std::string::npos ? std::string::npos : eq - 4));
+              std::string key;
+              for (const auto &p : path)
+                key += p + "/";
+              entries[key + name] =
+                eq == std::string::npos ?
+                  "" :
+                  dealii::Utilities::trim(line.substr(eq + 1));
+            }
+        }
+      return entries;
+    }
+
+    /// Entries a continued run may change: where and how long it runs, and
+    /// when it ends or writes checkpoints.
+    bool
+    may_change(const std::string &entry)
+    {
+      return entry == "Time integration/End time" ||
+             entry.rfind("Termination/", 0) == 0 ||
+             entry.rfind("Checkpoint/", 0) == 0 ||
+             entry == "Output/Screen output interval" || entry == "Test mode";
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::string
+  Simulator<dim>::newest_checkpoint() const
+  {
+    const fs::path  base = fs::path(output_directory->name()) / "checkpoint";
+    std::error_code error;
+    std::string     newest;
+    if (!fs::is_directory(base, error))
+      return newest;
+    for (const auto &entry : fs::directory_iterator(base, error))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("step-", 0) == 0 &&
+            fs::is_regular_file(entry.path() / "state", error) &&
+            entry.path().string() > newest)
+          newest = entry.path().string();
+      }
+    return newest;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::check_checkpoint_parameters(ParameterHandler &prm) const
+  {
+    std::ifstream in(resume_from + "/state", std::ios::binary);
+    std::string   format, parameters;
+    BinaryIO::read(in, format);
+    AssertThrow(format == format_name,
+                ExcMessage("<" + resume_from +
+                           "/state> is not a checkpoint of this version of "
+                           "rupture."));
+    BinaryIO::read(in, parameters);
+    std::ostringstream now;
+    prm.print_parameters(now, ParameterHandler::ShortPRM);
+    const auto before = entries_of(parameters), after = entries_of(now.str());
+    for (const auto &[entry, value] : after)
+      {
+        const auto        at = before.find(entry);
+        const std::string old_value =
+          at == before.end() ? std::string("(not set)") : at->second;
+        AssertThrow(value == old_value || may_change(entry),
+                    ExcMessage("The checkpoint <" + resume_from +
+                               "> was written with <" + entry + "> = '" +
+                               old_value + "', but this run has '" + value +
+                               "'. A run continues only with the parameters "
+                               "it started with; only <Time integration/End "
+                               "time>, the <Termination> and <Checkpoint> "
+                               "entries and <Output/Screen output interval> "
+                               "may change. Run without --resume to start "
+                               "anew."));
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope t(timer, "Checkpoint");
+    const unsigned int rank =
+      dealii::Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks =
+      dealii::Utilities::MPI::n_mpi_processes(communicator);
+    const fs::path  base    = fs::path(output_directory->name()) / "checkpoint";
+    const fs::path  writing = base / "writing";
+    std::error_code error;
+    if (rank == 0)
+      {
+        fs::remove_all(writing, error);
+        fs::create_directories(writing, error);
+      }
+    std::string message = error ?
+                            "The checkpoint directory <" + writing.string() +
+                              "> cannot be created: " + error.message() :
+                            std::string();
+    Utilities::throw_if_any(message, communicator);
+
+    // Named in the manifests first (under the name they will have), so
+    // that a new run in this directory removes them like every other
+    // result of this one.
+    char step_name[32];
+    std::snprintf(step_name, sizeof(step_name), "step-%09u", step);
+    {
+      const std::string final_dir    = std::string("checkpoint/") + step_name;
+      std::vector<std::string> names = {"fault." + std::to_string(rank)};
+      if (rank == 0)
+        for (const char *name : {"mesh",
+                                 "mesh.info",
+                                 "mesh_fixed.data",
+                                 "mesh_variable.data",
+                                 "state"})
+          names.emplace_back(name);
+      for (const auto &name : names)
+        {
+          output_directory->record(final_dir + "/" + name);
+          output_directory->record("checkpoint/writing/" + name);
+        }
+    }
+
+    // The mesh with the fields.
+    std::vector<VectorType *> fields = {&displacement,
+                                        &velocity,
+                                        &acceleration,
+                                        &applied_force,
+                                        &damping_force,
+                                        &contact_force};
+    if (has_absorbing)
+      fields.push_back(&absorbing_force);
+    std::vector<VectorType>         ghosted(fields.size());
+    std::vector<const VectorType *> pointers;
+    for (unsigned int k = 0; k < fields.size(); ++k)
+      {
+        ghosted[k].reinit(locally_owned_dofs,
+                          locally_relevant_dofs,
+                          communicator);
+        ghosted[k] = *fields[k];
+        pointers.push_back(&ghosted[k]);
+      }
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+      dof_handler);
+    transfer.prepare_for_serialization(pointers);
+    triangulation.save((writing / "mesh").string());
+
+    // This rank's fault pairs.
+    if (fault)
+      {
+        std::ofstream out(writing / ("fault." + std::to_string(rank)),
+                          std::ios::binary);
+        fault->save(out);
+        out.close();
+        if (!out)
+          message = "The checkpoint's fault file cannot be written.";
+      }
+    Utilities::throw_if_any(message, communicator);
+
+    if (rank == 0)
+      {
+        std::ostringstream out;
+        BinaryIO::write(out, std::string(format_name));
+        BinaryIO::write(out, parameters_text);
+        BinaryIO::write(out,
+                        std::vector<double>{double(dim),
+                                            double(n_ranks),
+                                            double(dof_handler.n_dofs()),
+                                            double(fields.size()),
+                                            time,
+                                            phase_time,
+                                            double(step),
+                                            dynamic_start,
+                                            double(in_dynamic_phase),
+                                            time_step,
+                                            initial_energy,
+                                            kinetic_energy,
+                                            strain_energy,
+                                            external_work,
+                                            damping_dissipation,
+                                            absorbed_energy,
+                                            fault_work,
+                                            next_output_time,
+                                            next_fault_output_time,
+                                            peak_slip_rate,
+                                            double(last_linear_iterations),
+                                            double(last_newton_iterations),
+                                            phase_start_time,
+                                            double(steps_in_phase)});
+        statistics.save(out);
+        volume_output->save(out);
+        receivers->save(out);
+        if (fault)
+          fault_output->save(out);
+        termination.save(out);
+        // Written last: a checkpoint is complete when its state is there.
+        Utilities::write_file_atomically((writing / "state").string(),
+                                         out.str());
+
+        const fs::path done = base / step_name;
+        fs::remove_all(done, error);
+        fs::rename(writing, done, error);
+        if (error)
+          message = "The checkpoint <" + done.string() +
+                    "> cannot be completed: " + error.message();
+        // Keep the two newest complete ones.
+        std::vector<std::string> all;
+        for (const auto &entry : fs::directory_iterator(base, error))
+          if (entry.path().filename().string().rfind("step-", 0) == 0 &&
+              fs::is_regular_file(entry.path() / "state", error))
+            all.push_back(entry.path().string());
+        std::sort(all.begin(), all.end());
+        for (unsigned int k = 0; k + 2 < all.size(); ++k)
+          fs::remove_all(all[k], error);
+      }
+    Utilities::throw_if_any(message, communicator);
+    last_checkpoint_wall = MPI_Wtime();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::read_checkpoint()
+  {
+    TimerOutput::Scope t(timer, "Checkpoint");
+    std::ifstream      in(resume_from + "/state", std::ios::binary);
+    AssertThrow(in,
+                ExcMessage("The checkpoint <" + resume_from +
+                           "/state> cannot be read."));
+    std::string format, parameters;
+    BinaryIO::read(in, format);
+    BinaryIO::read(in, parameters);
+    std::vector<double> s;
+    BinaryIO::read(in, s);
+    AssertThrow(s.size() == 24 && s[0] == dim,
+                ExcMessage("The checkpoint <" + resume_from +
+                           "> is damaged or of another dimension."));
+    AssertThrow(s[2] == dof_handler.n_dofs(),
+                ExcMessage("The checkpoint <" + resume_from + "> has " +
+                           std::to_string(static_cast<long>(s[2])) +
+                           " DoFs, this run " +
+                           std::to_string(dof_handler.n_dofs()) +
+                           ": it was written for another mesh."));
+    const unsigned int n_saved_ranks = static_cast<unsigned int>(s[1]);
+
+    // The fields, on this run's DoFs.
+    std::vector<VectorType *> fields = {&displacement,
+                                        &velocity,
+                                        &acceleration,
+                                        &applied_force,
+                                        &damping_force,
+                                        &contact_force};
+    if (has_absorbing)
+      {
+        absorbing_force.reinit(locally_owned_dofs, communicator);
+        fields.push_back(&absorbing_force);
+      }
+    AssertThrow(fields.size() == s[3],
+                ExcMessage("The checkpoint <" + resume_from +
+                           "> holds other fields than this run needs."));
+    for (VectorType *v : fields)
+      v->reinit(locally_owned_dofs, communicator);
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+      dof_handler);
+    transfer.deserialize(fields);
+    for (VectorType *v : fields)
+      distribute_hanging(*v);
+
+    time                   = s[4];
+    phase_time             = s[5];
+    step                   = static_cast<unsigned int>(s[6]);
+    dynamic_start          = s[7];
+    in_dynamic_phase       = s[8] != 0;
+    time_step              = s[9];
+    initial_energy         = s[10];
+    kinetic_energy         = s[11];
+    strain_energy          = s[12];
+    external_work          = s[13];
+    damping_dissipation    = s[14];
+    absorbed_energy        = s[15];
+    fault_work             = s[16];
+    next_output_time       = s[17];
+    next_fault_output_time = s[18];
+    peak_slip_rate         = s[19];
+    last_linear_iterations = static_cast<unsigned int>(s[20]);
+    last_newton_iterations = static_cast<unsigned int>(s[21]);
+    phase_start_time       = s[22];
+    steps_in_phase         = static_cast<unsigned int>(s[23]);
+
+    statistics.load(in);
+    volume_output->load(in);
+    receivers->load(in);
+    if (fault)
+      {
+        fault_output->load(in);
+        std::vector<std::string> files;
+        for (unsigned int r = 0; r < n_saved_ranks; ++r)
+          files.push_back(resume_from + "/fault." + std::to_string(r));
+        fault->load(files);
+        fault->set_time(time);
+      }
+    termination.load(in);
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture

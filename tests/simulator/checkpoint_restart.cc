@@ -1,0 +1,269 @@
+// Checkpoints and restart on the 1-D rupture column of termination.cc
+// (flash heating, explicit, 784 steps) and on the implicit penalty column
+// of plane_wave.prm (60 steps, block Jacobi). For each: an uninterrupted
+// run; a run with <Checkpoint/Interval> = 100 (20), whose newest checkpoint
+// (at its end) is then removed, as if the run had been killed after step
+// 700 (40); and a run
+// with --resume, which must continue from there and rewrite the same
+// statistics and station file, to the last digit, on the same number of
+// ranks. In the 2-rank variant a checkpoint written by rank 0 alone is
+// continued on two ranks: equal within 1e-8 relative or 1e-10 absolute. Then
+// what
+// --resume must refuse or ignore: a half-written checkpoint (a directory
+// without its state file), a changed parameter (named), a directory
+// without checkpoints, and checkpoints in a run with a loading phase (not
+// yet available).
+
+#include <deal.II/base/mpi.h>
+
+#include "../tests.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  namespace fs = std::filesystem;
+
+  std::string
+  first_line_of(const std::string &text)
+  {
+    const auto begin = text.find_first_not_of('\n');
+    if (begin == std::string::npos)
+      return "";
+    return text.substr(begin, text.find('\n', begin) - begin);
+  }
+
+  /// Whether two tables are equal: bit for bit (@p tolerance 0), or within
+  /// a relative @p tolerance (absolute below 1e-12).
+  bool
+  same(const std::string &a, const std::string &b, const double tolerance)
+  {
+    const auto x = tests::read_statistics(a), y = tests::read_statistics(b);
+    if (x.size() != y.size() || x.empty())
+      return false;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      {
+        if (x[i].size() != y[i].size())
+          return false;
+        for (unsigned int j = 0; j < x[i].size(); ++j)
+          if (tolerance == 0 ? x[i][j] != y[i][j] :
+                               std::abs(x[i][j] - y[i][j]) >
+                                 std::max(tolerance * std::abs(x[i][j]), 1e-10))
+            return false;
+      }
+    return true;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool         root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const unsigned int n_ranks = dealii::Utilities::MPI::n_mpi_processes(comm);
+  const std::string  prm =
+    std::string(SOURCE_DIR) + "/../fault/inputs/plane_wave.prm";
+  const std::vector<std::string> column = {
+    "--set",
+    "Fault/Model=traction at split nodes",
+    "--set",
+    "Fault/Initial traction=5; -10",
+    "--set",
+    "Fault/Traction perturbation/Traction=1; 0",
+    "--set",
+    "Fault/Traction perturbation/Time function=(t < 1) ? 4 * t : "
+    "((t < 3) ? 4 : ((t < 4) ? 4 - 8 * (t - 3) : -4))",
+    "--set",
+    "Fault/Friction law=flash heating",
+    "--set",
+    "Fault/Flash heating/Direct effect=0.01",
+    "--set",
+    "Fault/Flash heating/Weakening slip rate=0.1",
+    "--set",
+    "Fault/Flash heating/Evolution effect=0.014",
+    "--set",
+    "Fault/Flash heating/Characteristic slip distance=0.05",
+    "--set",
+    "Fault/Flash heating/Reference friction coefficient=0.6",
+    "--set",
+    "Fault/Flash heating/Reference slip rate=1e-6",
+    "--set",
+    "Fault/Flash heating/Weakened friction coefficient=0.2",
+    "--set",
+    "Fault/Flash heating/Initial slip rate=1e-16",
+    "--set",
+    "Fault/Output/Stations=fault: 0.025, 0",
+    "--set",
+    "Time integration/Scheme=explicit central difference",
+    "--set",
+    "Time integration/Time step=0",
+    "--set",
+    "Time integration/End time=8"};
+  const std::vector<std::string> implicit = {
+    "--set",
+    "Fault/Output/Stations=fault: 0.025, 0",
+    "--set",
+    "Solver/Linear solver=automatic",
+    "--set",
+    "Solver/Preconditioner=block Jacobi",
+    "--set",
+    "Time integration/End time=0.6"};
+
+  struct Case
+  {
+    const char              *name;
+    std::vector<std::string> sets;
+    const char              *last_checkpoint;
+    const char              *interval;
+  };
+  const Case cases[] = {
+    {"explicit, traction at split nodes", column, "step-000000784", "100"},
+    {"implicit Newmark, penalty contact", implicit, "step-000000060", "20"}};
+
+  const auto run = [&](const std::vector<std::string> &sets,
+                       const std::string              &directory,
+                       const std::vector<std::string> &more,
+                       const MPI_Comm                  communicator,
+                       std::string                    &errors) {
+    std::vector<std::string> args = {prm};
+    args.insert(args.end(), sets.begin(), sets.end());
+    args.insert(args.end(), {"--set", "Output directory=" + directory});
+    args.insert(args.end(), more.begin(), more.end());
+    std::ostringstream sink, error_sink;
+    std::streambuf    *old     = std::cout.rdbuf(sink.rdbuf());
+    std::streambuf    *old_err = std::cerr.rdbuf(error_sink.rdbuf());
+    const int          code    = rupture::run_program(args, communicator);
+    std::cout.rdbuf(old);
+    std::cerr.rdbuf(old_err);
+    errors = error_sink.str();
+    return code;
+  };
+  // (Nothing left from an earlier run of this test.)
+  if (root)
+    for (const std::string d : {"full-0",
+                                "full-1",
+                                "stopped-0",
+                                "stopped-1",
+                                "one-rank-0",
+                                "one-rank-1",
+                                "empty"})
+      fs::remove_all(d);
+  MPI_Barrier(comm);
+
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      const Case                    &c       = cases[k];
+      const std::string              full    = "full-" + std::to_string(k);
+      const std::string              stopped = "stopped-" + std::to_string(k);
+      const std::string              one     = "one-rank-" + std::to_string(k);
+      const std::vector<std::string> every   = {
+          "--set", std::string("Checkpoint/Interval=") + c.interval};
+      std::vector<std::string> resume = every;
+      resume.push_back("--resume");
+      if (root)
+        std::printf("%s:\n", c.name);
+      std::string errors;
+      run(c.sets, full, {}, comm, errors);
+      run(c.sets, stopped, every, comm, errors);
+      MPI_Barrier(comm);
+      if (root)
+        {
+          std::vector<std::string> kept;
+          for (const auto &e : fs::directory_iterator(stopped + "/checkpoint"))
+            kept.push_back(e.path().filename().string());
+          std::sort(kept.begin(), kept.end());
+          std::printf("  checkpoints kept:");
+          for (const auto &k : kept)
+            std::printf(" %s", k.c_str());
+          std::printf("\n");
+          // As if killed after the one before: the last one is gone, and
+          // a newer one was being written (no state file yet).
+          fs::remove_all(stopped + "/checkpoint/" + c.last_checkpoint);
+          fs::create_directories(stopped + "/checkpoint/step-000099999");
+          fs::create_directories(stopped + "/checkpoint/writing");
+        }
+      MPI_Barrier(comm);
+      const int code = run(c.sets, stopped, resume, comm, errors);
+      if (root)
+        {
+          std::printf("  resumed: exit code %d%s\n",
+                      code,
+                      errors.empty() ? "" : (" " + errors).c_str());
+          const std::string log = tests::read_file(stopped + "/log.txt");
+          const auto        at  = log.find("*** Continuing after step");
+          std::printf("  %s\n",
+                      at == std::string::npos ?
+                        "no 'Continuing' line in log.txt" :
+                        log.substr(at, log.find('\n', at) - at).c_str());
+          for (const std::string file : {"statistics", "fault.dat"})
+            std::printf("  %s as the uninterrupted run's, to the last "
+                        "digit: %s\n",
+                        file.c_str(),
+                        same(full + "/" + file, stopped + "/" + file, 0) ?
+                          "yes" :
+                          "no");
+        }
+
+      if (n_ranks == 2)
+        {
+          // Written by rank 0 alone, continued on two ranks.
+          MPI_Comm alone;
+          MPI_Comm_split(comm, root ? 0 : MPI_UNDEFINED, 0, &alone);
+          if (root)
+            {
+              run(c.sets, one, every, alone, errors);
+              fs::remove_all(one + "/checkpoint/" + c.last_checkpoint);
+              MPI_Comm_free(&alone);
+            }
+          MPI_Barrier(comm);
+          const int code = run(c.sets, one, resume, comm, errors);
+          if (root)
+            std::printf("  written on 1 rank, continued on 2: exit code %d, "
+                        "statistics and station as the uninterrupted run's "
+                        "within 1e-8: %s\n",
+                        code,
+                        same(full + "/statistics", one + "/statistics", 1e-8) &&
+                            same(full + "/fault.dat",
+                                 one + "/fault.dat",
+                                 1e-8) ?
+                          "yes" :
+                          "no");
+        }
+    }
+
+  // What --resume refuses.
+  const std::vector<std::pair<std::string, std::vector<std::string>>> bad = {
+    {"a changed parameter",
+     {"--set",
+      "Material/Density=1.5",
+      "--set",
+      "Checkpoint/Interval=100",
+      "--resume"}},
+    {"no checkpoint", {"--resume"}},
+    {"a loading phase",
+     {"--set",
+      "Time integration/Loading phase/Enabled=true",
+      "--set",
+      "Checkpoint/Interval=10"}}};
+  for (const auto &[name, sets] : bad)
+    {
+      std::string       errors;
+      const std::string directory =
+        (name == "no checkpoint") ? "empty" : "stopped-0";
+      const int code = run(cases[0].sets, directory, sets, comm, errors);
+      if (root)
+        std::printf("%s: exit code %d\n  %s\n",
+                    name.c_str(),
+                    code,
+                    first_line_of(errors).substr(0, 230).c_str());
+    }
+  return 0;
+}
