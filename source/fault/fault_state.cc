@@ -230,6 +230,18 @@ namespace rupture
 
     template <int dim>
     void
+    Fault<dim>::continue_dynamic_phase(const double time)
+    {
+      friction_law->start_dynamic_phase(time);
+      friction_law->enable_weakening(true);
+      dynamic_start      = time;
+      forced_slip_active = true;
+    }
+
+
+
+    template <int dim>
+    void
     Fault<dim>::start_loading_phase()
     {
       friction_law->enable_weakening(false);

@@ -494,14 +494,6 @@ namespace rupture
     AssertThrow(std::isfinite(checkpoint_minutes),
                 ExcMessage("<Checkpoint/Wall-clock interval> must be a "
                            "finite number of minutes (0: off)."));
-    // (Not yet: the loading phase's hand-over to the dynamic phase.)
-    AssertThrow(!(checkpoints_enabled() || resume) ||
-                  !time_parameters.loading_phase,
-                ExcMessage("Checkpoints are not available yet for runs with "
-                           "a <Time integration/Loading phase>. Set "
-                           "<Checkpoint/Interval> and <Checkpoint/Wall-clock "
-                           "interval> to 0."));
-
     // Station and receiver files share the directory: two series with one
     // file name would silently lose one.
     {

@@ -214,8 +214,43 @@ namespace rupture
         if (termination.any())
           pcout << termination.description() << "\n";
         pcout << "*** Continuing after step " << step
-              << " (t = " << std::setprecision(6) << phase_time << " s)\n";
-        run_phase(time_parameters.end_time, false, steps_in_phase);
+              << " (t = " << std::setprecision(6) << phase_time << " s"
+              << (time_parameters.loading_phase ?
+                    (in_dynamic_phase ? " of the dynamic phase" :
+                                        " of the loading phase") :
+                    "")
+              << ")\n";
+        if (!time_parameters.loading_phase)
+          run_phase(time_parameters.end_time, false, steps_in_phase);
+        else if (!in_dynamic_phase)
+          {
+            const bool stop_when_weakening =
+              fault && time_parameters.stop_loading_when_weakening;
+            if (fault)
+              fault->start_loading_phase();
+            // A checkpoint of the step that ended the loading phase goes
+            // on with the dynamic phase at once, as that run did.
+            if (!(stop_when_weakening && fault->n_weakening() > 0))
+              run_phase(time_parameters.loading_end_time,
+                        stop_when_weakening,
+                        steps_in_phase);
+            if (end_reason == Termination::Reason::end_time)
+              {
+                start_dynamic_phase_after_loading();
+                run_phase(time_parameters.end_time, false);
+              }
+          }
+        else
+          {
+            // The dynamic phase's integrator and friction, without the
+            // resets of its start (its state came from the checkpoint).
+            prepare_phase(time_parameters.scheme,
+                          time_parameters.time_step,
+                          time_parameters.end_time);
+            if (fault)
+              fault->continue_dynamic_phase(dynamic_start);
+            run_phase(time_parameters.end_time, false, steps_in_phase);
+          }
         finish_run();
         return;
       }
@@ -297,51 +332,60 @@ namespace rupture
     if (time_parameters.loading_phase &&
         end_reason == Termination::Reason::end_time)
       {
-        // The end state of the loading phase is the initial state of the
-        // dynamic phase: displacement, stress, fault tractions and slip
-        // carry over; the body starts from rest (up to the boundary
-        // velocities) with the acceleration of its current forces.
-        const double start = time;
-        pcout << "*** Dynamic phase (" << time_parameters.scheme_name()
-              << ") from t = " << std::setprecision(6) << start << " s\n";
-        prepare_phase(time_parameters.scheme,
-                      time_parameters.time_step,
-                      time_parameters.end_time);
-        dynamic_start    = start;
-        phase_time       = 0;
-        in_dynamic_phase = true;
-        volume_output->start_series("solution", "solution.pvd");
-        next_output_time       = 0;
-        next_fault_output_time = 0;
-        if (fault)
-          {
-            fault->start_dynamic_phase(start);
-            fault_output->start_dynamic_phase();
-            fault_output->record(*fault, 0);
-          }
-        receivers->clear();
-        receivers->record(displacement, velocity, 0);
-        if (current_scheme() != TimeIntegration::Scheme::quasi_static)
-          {
-            velocity = 0;
-            set_kinematic_velocity(velocity);
-            VectorType load(locally_owned_dofs, communicator);
-            assemble_load_vector(time, load);
-            compute_acceleration(load);
-            compute_damping_force(velocity, damping_force);
-            if (has_absorbing)
-              compute_absorbing_force(velocity, absorbing_force);
-          }
-        // The first snapshots of the dynamic phase's time series: its
-        // initial state, at its time 0.
-        write_step_output(true);
-        termination.start_phase(true);
+        start_dynamic_phase_after_loading();
         run_phase(time_parameters.end_time, false);
       }
     else if (!time_parameters.loading_phase)
       run_phase(time_parameters.end_time, false);
     // (The last step of a phase writes everything: run_phase() forces it.)
     finish_run();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::start_dynamic_phase_after_loading()
+  {
+    // The end state of the loading phase is the initial state of the
+    // dynamic phase: displacement, stress, fault tractions and slip
+    // carry over; the body starts from rest (up to the boundary
+    // velocities) with the acceleration of its current forces.
+    const double start = time;
+    pcout << "*** Dynamic phase (" << time_parameters.scheme_name()
+          << ") from t = " << std::setprecision(6) << start << " s\n";
+    prepare_phase(time_parameters.scheme,
+                  time_parameters.time_step,
+                  time_parameters.end_time);
+    dynamic_start    = start;
+    phase_time       = 0;
+    in_dynamic_phase = true;
+    volume_output->start_series("solution", "solution.pvd");
+    next_output_time       = 0;
+    next_fault_output_time = 0;
+    if (fault)
+      {
+        fault->start_dynamic_phase(start);
+        fault_output->start_dynamic_phase();
+        fault_output->record(*fault, 0);
+      }
+    receivers->clear();
+    receivers->record(displacement, velocity, 0);
+    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
+      {
+        velocity = 0;
+        set_kinematic_velocity(velocity);
+        VectorType load(locally_owned_dofs, communicator);
+        assemble_load_vector(time, load);
+        compute_acceleration(load);
+        compute_damping_force(velocity, damping_force);
+        if (has_absorbing)
+          compute_absorbing_force(velocity, absorbing_force);
+      }
+    // The first snapshots of the dynamic phase's time series: its
+    // initial state, at its time 0.
+    write_step_output(true);
+    termination.start_phase(true);
   }
 
 

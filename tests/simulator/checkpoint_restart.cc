@@ -10,9 +10,15 @@
 // continued on two ranks: equal within 1e-8 relative or 1e-10 absolute. Then
 // what
 // --resume must refuse or ignore: a half-written checkpoint (a directory
-// without its state file), a changed parameter (named), a directory
-// without checkpoints, and checkpoints in a run with a loading phase (not
-// yet available).
+// without its state file), a changed parameter (named) and a directory
+// without checkpoints. Also the two-step sequence of fault/load_sequence.prm
+// (75 quasi-static loading steps ended by a bonded zone that slips, then
+// 50 implicit dynamic steps), continued from a checkpoint in the loading
+// phase (step 70), at the step that ended it (75) and in the dynamic phase
+// (119): the stations the same to the last digit, the statistics within
+// 1e-12 (on two ranks, continued in the dynamic phase, one kinetic energy
+// of one step differs in its last bit while every later row is the same:
+// not the state, a sum).
 
 #include <deal.II/base/mpi.h>
 
@@ -128,12 +134,13 @@ main(int argc, char **argv)
     {"explicit, traction at split nodes", column, "step-000000784", "100"},
     {"implicit Newmark, penalty contact", implicit, "step-000000060", "20"}};
 
-  const auto run = [&](const std::vector<std::string> &sets,
+  std::string input = prm;
+  const auto  run   = [&](const std::vector<std::string> &sets,
                        const std::string              &directory,
                        const std::vector<std::string> &more,
                        const MPI_Comm                  communicator,
                        std::string                    &errors) {
-    std::vector<std::string> args = {prm};
+    std::vector<std::string> args = {input};
     args.insert(args.end(), sets.begin(), sets.end());
     args.insert(args.end(), {"--set", "Output directory=" + directory});
     args.insert(args.end(), more.begin(), more.end());
@@ -154,6 +161,7 @@ main(int argc, char **argv)
                                 "stopped-1",
                                 "one-rank-0",
                                 "one-rank-1",
+                                "sequence-full",
                                 "empty"})
       fs::remove_all(d);
   MPI_Barrier(comm);
@@ -239,6 +247,56 @@ main(int argc, char **argv)
         }
     }
 
+  // The two-step sequence.
+  input = std::string(SOURCE_DIR) + "/../fault/load_sequence.prm";
+  if (root)
+    std::printf("the load sequence (loading, then dynamic):\n");
+  {
+    std::string errors;
+    run({}, "sequence-full", {}, comm, errors);
+  }
+  for (const std::string interval : {"70", "75", "7"})
+    {
+      const std::string              directory = "sequence-" + interval;
+      const std::vector<std::string> every     = {"--set",
+                                                  "Checkpoint/Interval=" +
+                                                    interval};
+      std::vector<std::string>       resume    = every;
+      resume.push_back("--resume");
+      std::string errors;
+      if (root)
+        fs::remove_all(directory);
+      MPI_Barrier(comm);
+      run({}, directory, every, comm, errors);
+      MPI_Barrier(comm);
+      if (root)
+        fs::remove_all(directory + "/checkpoint/step-000000125");
+      MPI_Barrier(comm);
+      const int code = run({}, directory, resume, comm, errors);
+      if (root)
+        {
+          const std::string log = tests::read_file(directory + "/log.txt");
+          const auto        at  = log.find("*** Continuing after step");
+          std::printf(
+            "  every %s steps: exit code %d, %s; stations as the "
+            "uninterrupted run's to the last digit: %s, statistics within "
+            "1e-12: %s\n",
+            interval.c_str(),
+            code,
+            at == std::string::npos ?
+              "no 'Continuing' line" :
+              log.substr(at + 4, log.find('\n', at) - at - 4).c_str(),
+            same("sequence-full/centre.dat", directory + "/centre.dat", 0) &&
+                same("sequence-full/side.dat", directory + "/side.dat", 0) ?
+              "yes" :
+              "no",
+            same("sequence-full/statistics", directory + "/statistics", 1e-12) ?
+              "yes" :
+              "no");
+        }
+    }
+  input = prm;
+
   // What --resume refuses.
   const std::vector<std::pair<std::string, std::vector<std::string>>> bad = {
     {"a changed parameter",
@@ -247,12 +305,7 @@ main(int argc, char **argv)
       "--set",
       "Checkpoint/Interval=100",
       "--resume"}},
-    {"no checkpoint", {"--resume"}},
-    {"a loading phase",
-     {"--set",
-      "Time integration/Loading phase/Enabled=true",
-      "--set",
-      "Checkpoint/Interval=10"}}};
+    {"no checkpoint", {"--resume"}}};
   for (const auto &[name, sets] : bad)
     {
       std::string       errors;

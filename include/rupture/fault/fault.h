@@ -312,6 +312,14 @@ namespace rupture
       start_loading_phase();
 
       /**
+       * A run continued from a checkpoint in the dynamic phase that started
+       * at @p time: friction weakens and forced slip acts again, without
+       * the resets of start_dynamic_phase().
+       */
+      void
+      continue_dynamic_phase(const double time);
+
+      /**
        * For checkpoints: save() writes this rank's node pairs (their
        * committed state, keyed by location) and the fault's clock; load()
        * reads the files that all ranks of the checkpointed run wrote and

@@ -179,6 +179,9 @@ namespace rupture
     /// The end of a run: the final state on the screen, summary.json.
     void
     finish_run();
+    /// The hand-over from the loading phase to the dynamic phase.
+    void
+    start_dynamic_phase_after_loading();
 
     // Checkpoints (checkpoint.cc).
     /// <Checkpoint/Interval> (steps) and <Wall-clock interval> (minutes);
