@@ -254,6 +254,7 @@ namespace rupture
         if (fault)
           fault_output->save(out);
         termination.save(out);
+        BinaryIO::write(out, integrator->saved_state());
         // Written last: a checkpoint is complete when its state is there.
         Utilities::write_file_atomically((writing / "state").string(),
                                          out.str());
@@ -362,6 +363,7 @@ namespace rupture
         fault->set_time(time);
       }
     termination.load(in);
+    BinaryIO::read(in, integrator_state);
   }
 
 

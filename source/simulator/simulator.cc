@@ -221,9 +221,13 @@ namespace rupture
                     "")
               << ")\n";
         if (!time_parameters.loading_phase)
-          run_phase(time_parameters.end_time, false, steps_in_phase);
+          {
+            integrator->restore_state(integrator_state);
+            run_phase(time_parameters.end_time, false, steps_in_phase);
+          }
         else if (!in_dynamic_phase)
           {
+            integrator->restore_state(integrator_state);
             const bool stop_when_weakening =
               fault && time_parameters.stop_loading_when_weakening;
             if (fault)
@@ -247,6 +251,7 @@ namespace rupture
             prepare_phase(time_parameters.scheme,
                           time_parameters.time_step,
                           time_parameters.end_time);
+            integrator->restore_state(integrator_state);
             if (fault)
               fault->continue_dynamic_phase(dynamic_start);
             run_phase(time_parameters.end_time, false, steps_in_phase);

@@ -51,6 +51,28 @@ namespace rupture
 
 
     template <int dim>
+    std::vector<double>
+    ImplicitNewmark<dim>::saved_state() const
+    {
+      return {double(substep_depth), double(steps_without_cut)};
+    }
+
+
+
+    template <int dim>
+    void
+    ImplicitNewmark<dim>::restore_state(const std::vector<double> &state)
+    {
+      AssertThrow(state.size() == 2,
+                  ExcMessage("The checkpoint's state of the implicit scheme "
+                             "is damaged."));
+      substep_depth     = static_cast<unsigned int>(state[0]);
+      steps_without_cut = static_cast<unsigned int>(state[1]);
+    }
+
+
+
+    template <int dim>
     void
     ImplicitNewmark<dim>::prepare()
     {

@@ -295,6 +295,41 @@ main(int argc, char **argv)
               "no");
         }
     }
+  // Continued between the sub-steps that follow a step cut (the implicit
+  // scheme's sub-stepping is part of the checkpoint).
+  input = std::string(SOURCE_DIR) + "/newton_stall_substeps.prm";
+  {
+    std::string errors;
+    if (root)
+      fs::remove_all("substeps-full"), fs::remove_all("substeps-21");
+    MPI_Barrier(comm);
+    run({}, "substeps-full", {}, comm, errors);
+    const std::vector<std::string> every  = {"--set", "Checkpoint/Interval=21"};
+    std::vector<std::string>       resume = every;
+    resume.push_back("--resume");
+    run({}, "substeps-21", every, comm, errors);
+    MPI_Barrier(comm);
+    if (root)
+      fs::remove_all("substeps-21/checkpoint/step-000000029");
+    MPI_Barrier(comm);
+    const int code = run({}, "substeps-21", resume, comm, errors);
+    if (root)
+      {
+        const std::string log = tests::read_file("substeps-21/log.txt");
+        const auto        at  = log.find("*** Continuing after step");
+        const std::string rest =
+          at == std::string::npos ? std::string() : log.substr(at);
+        std::printf(
+          "after a step cut: exit code %d, continued after step "
+          "21, then 2 sub-steps per step: %s; statistics as the "
+          "uninterrupted run's, to the last digit: %s\n",
+          code,
+          rest.find("taken as 2 sub-steps") != std::string::npos ? "yes" : "no",
+          same("substeps-full/statistics", "substeps-21/statistics", 0) ?
+            "yes" :
+            "no");
+      }
+  }
   input = prm;
 
   // What --resume refuses.

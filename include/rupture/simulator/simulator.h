@@ -194,6 +194,9 @@ namespace rupture
     std::string resume_from;
     /// The run's parameters as written to parameters.prm (ShortPRM).
     std::string parameters_text;
+    /// The time integrator's state read from a checkpoint, restored once
+    /// the phase's integrator is prepared.
+    std::vector<double> integrator_state;
     /// The current phase's start time and the steps done in it.
     double       phase_start_time = 0;
     unsigned int steps_in_phase   = 0;

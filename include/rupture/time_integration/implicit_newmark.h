@@ -29,6 +29,11 @@ namespace rupture
       void
       step() override;
 
+      std::vector<double>
+      saved_state() const override;
+      void
+      restore_state(const std::vector<double> &state) override;
+
     private:
       using Interface<dim>::simulator;
 

@@ -4,6 +4,7 @@
 #include <rupture/time_integration/newmark.h>
 
 #include <memory>
+#include <vector>
 
 namespace rupture
 {
@@ -51,6 +52,20 @@ namespace rupture
        */
       virtual void
       step() = 0;
+
+      /**
+       * What a checkpoint keeps of the integrator between steps (the
+       * implicit scheme's sub-stepping after step cuts), and its restore
+       * after prepare(). Nothing by default.
+       */
+      virtual std::vector<double>
+      saved_state() const
+      {
+        return {};
+      }
+      virtual void
+      restore_state(const std::vector<double> &)
+      {}
 
     protected:
       Simulator<dim> &simulator;
