@@ -138,6 +138,25 @@ namespace rupture
 
 
   template <int dim>
+  std::vector<typename Simulator<dim>::VectorType *>
+  Simulator<dim>::checkpoint_fields()
+  {
+    // The motion, and the forces of the last step that the energy sums'
+    // trapezoidal rules use at the next one.
+    std::vector<VectorType *> fields = {&displacement,
+                                        &velocity,
+                                        &acceleration,
+                                        &applied_force,
+                                        &damping_force,
+                                        &contact_force};
+    if (has_absorbing)
+      fields.push_back(&absorbing_force);
+    return fields;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::write_checkpoint()
   {
@@ -183,14 +202,7 @@ namespace rupture
     }
 
     // The mesh with the fields.
-    std::vector<VectorType *> fields = {&displacement,
-                                        &velocity,
-                                        &acceleration,
-                                        &applied_force,
-                                        &damping_force,
-                                        &contact_force};
-    if (has_absorbing)
-      fields.push_back(&absorbing_force);
+    const std::vector<VectorType *> fields = checkpoint_fields();
     std::vector<VectorType>         ghosted(fields.size());
     std::vector<const VectorType *> pointers;
     for (unsigned int k = 0; k < fields.size(); ++k)
@@ -307,17 +319,7 @@ namespace rupture
     const unsigned int n_saved_ranks = static_cast<unsigned int>(s[1]);
 
     // The fields, on this run's DoFs.
-    std::vector<VectorType *> fields = {&displacement,
-                                        &velocity,
-                                        &acceleration,
-                                        &applied_force,
-                                        &damping_force,
-                                        &contact_force};
-    if (has_absorbing)
-      {
-        absorbing_force.reinit(locally_owned_dofs, communicator);
-        fields.push_back(&absorbing_force);
-      }
+    std::vector<VectorType *> fields = checkpoint_fields();
     AssertThrow(fields.size() == s[3],
                 ExcMessage("The checkpoint <" + resume_from +
                            "> holds other fields than this run needs."));

@@ -177,26 +177,30 @@ namespace rupture
       }
     catch (const ExceptionBase &e)
       {
-        if (output_prepared)
-          try
-            {
-              write_summary("failed", Utilities::user_message(e));
-            }
-          catch (...)
-            {}
+        write_failure_summary(Utilities::user_message(e));
         throw;
       }
     catch (const std::exception &e)
       {
-        if (output_prepared)
-          try
-            {
-              write_summary("failed", e.what());
-            }
-          catch (...)
-            {}
+        write_failure_summary(e.what());
         throw;
       }
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::write_failure_summary(const std::string &message)
+  {
+    // (Never a second exception while the first is on its way.)
+    if (output_prepared)
+      try
+        {
+          write_summary("failed", message);
+        }
+      catch (...)
+        {}
   }
 
 
@@ -208,57 +212,50 @@ namespace rupture
     wall_time_start      = MPI_Wtime();
     last_checkpoint_wall = wall_time_start;
     if (resume)
+      run_continued();
+    else
+      run_from_start();
+    finish_run();
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_continued()
+  {
+    // The state of the checkpoint's step, and the rest of the run: the
+    // phase it was written in goes on from the step after it.
+    read_checkpoint();
+    if (termination.any())
+      pcout << termination.description() << "\n";
+    pcout << "*** Continuing after step " << step
+          << " (t = " << std::setprecision(6) << phase_time << " s"
+          << (time_parameters.loading_phase ?
+                (in_dynamic_phase ? " of the dynamic phase" :
+                                    " of the loading phase") :
+                "")
+          << ")\n";
+    if (time_parameters.loading_phase && in_dynamic_phase)
       {
-        // The state of the checkpoint's step, and the rest of the run.
-        read_checkpoint();
-        if (termination.any())
-          pcout << termination.description() << "\n";
-        pcout << "*** Continuing after step " << step
-              << " (t = " << std::setprecision(6) << phase_time << " s"
-              << (time_parameters.loading_phase ?
-                    (in_dynamic_phase ? " of the dynamic phase" :
-                                        " of the loading phase") :
-                    "")
-              << ")\n";
-        if (!time_parameters.loading_phase)
-          {
-            integrator->restore_state(integrator_state);
-            run_phase(time_parameters.end_time, false, steps_in_phase);
-          }
-        else if (!in_dynamic_phase)
-          {
-            integrator->restore_state(integrator_state);
-            const bool stop_when_weakening =
-              fault && time_parameters.stop_loading_when_weakening;
-            if (fault)
-              fault->start_loading_phase();
-            // A checkpoint of the step that ended the loading phase goes
-            // on with the dynamic phase at once, as that run did.
-            if (!(stop_when_weakening && fault->n_weakening() > 0))
-              run_phase(time_parameters.loading_end_time,
-                        stop_when_weakening,
-                        steps_in_phase);
-            if (end_reason == Termination::Reason::end_time)
-              {
-                start_dynamic_phase_after_loading();
-                run_phase(time_parameters.end_time, false);
-              }
-          }
-        else
-          {
-            // The dynamic phase's integrator and friction, without the
-            // resets of its start (its state came from the checkpoint).
-            prepare_phase(time_parameters.scheme,
-                          time_parameters.time_step,
-                          time_parameters.end_time);
-            integrator->restore_state(integrator_state);
-            if (fault)
-              fault->continue_dynamic_phase(dynamic_start);
-            run_phase(time_parameters.end_time, false, steps_in_phase);
-          }
-        finish_run();
-        return;
+        // The dynamic phase's integrator and friction, without the resets
+        // of its start (its state came from the checkpoint).
+        prepare_phase(time_parameters.scheme,
+                      time_parameters.time_step,
+                      time_parameters.end_time);
+        if (fault)
+          fault->continue_dynamic_phase(dynamic_start);
       }
+    integrator->restore_state(integrator_state);
+    run_phases(steps_in_phase);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_from_start()
+  {
     initialize_state();
     record_memory("initial state");
 
@@ -326,24 +323,38 @@ namespace rupture
       pcout << termination.description() << "\n";
     termination.start_phase(!time_parameters.loading_phase);
     if (time_parameters.loading_phase)
+      pcout << "*** Loading phase (quasi-static)\n";
+    run_phases(0);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::run_phases(const unsigned int steps_done)
+  {
+    // (The last step of a phase writes everything: run_phase() forces it.)
+    if (!time_parameters.loading_phase || in_dynamic_phase)
       {
-        pcout << "*** Loading phase (quasi-static)\n";
-        if (fault)
-          fault->start_loading_phase();
-        run_phase(time_parameters.loading_end_time,
-                  fault && time_parameters.stop_loading_when_weakening);
+        run_phase(time_parameters.end_time, false, steps_done);
+        return;
       }
+    const bool stop_when_weakening =
+      fault && time_parameters.stop_loading_when_weakening;
+    if (fault)
+      fault->start_loading_phase();
+    // A checkpoint of the step that ended the loading phase goes on with
+    // the dynamic phase at once, as that run did.
+    if (!(steps_done > 0 && stop_when_weakening && fault->n_weakening() > 0))
+      run_phase(time_parameters.loading_end_time,
+                stop_when_weakening,
+                steps_done);
     // (A wall-clock limit may end the run in its loading phase.)
-    if (time_parameters.loading_phase &&
-        end_reason == Termination::Reason::end_time)
+    if (end_reason == Termination::Reason::end_time)
       {
         start_dynamic_phase_after_loading();
         run_phase(time_parameters.end_time, false);
       }
-    else if (!time_parameters.loading_phase)
-      run_phase(time_parameters.end_time, false);
-    // (The last step of a phase writes everything: run_phase() forces it.)
-    finish_run();
   }
 
 
@@ -582,22 +593,12 @@ namespace rupture
             pcout << std::defaultfloat << std::endl;
           }
         write_step_output(i == n_steps || stop || ends_early);
-        if (checkpoints_enabled())
-          {
-            // Every <Interval> steps, every <Wall-clock interval> minutes
-            // (rank 0's clock) and at the end of the run.
-            // SIGUSR1 asks for one now (on any rank: decided together).
-            double state[2] = {(MPI_Wtime() - last_checkpoint_wall) / 60,
-                               Interruption::take_checkpoint_request() ? 1. :
-                                                                         0.};
-            MPI_Bcast(&state[0], 1, MPI_DOUBLE, 0, communicator);
-            MPI_Allreduce(
-              MPI_IN_PLACE, &state[1], 1, MPI_DOUBLE, MPI_MAX, communicator);
-            if ((checkpoint_interval > 0 && step % checkpoint_interval == 0) ||
-                (checkpoint_minutes > 0 && state[0] >= checkpoint_minutes) ||
-                state[1] > 0 || i == n_steps || ends_early)
-              write_checkpoint();
-          }
+        // Every <Interval> steps, when write_step_output() found one asked
+        // for (wall-clock interval, SIGUSR1), and at the end of the run.
+        if (checkpoints_enabled() &&
+            ((checkpoint_interval > 0 && step % checkpoint_interval == 0) ||
+             checkpoint_requested || i == n_steps || ends_early))
+          write_checkpoint();
         if (ends_early)
           {
             end_reason  = reason;
@@ -723,10 +724,20 @@ namespace rupture
     // of the ranks differ.
     const bool root =
       dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
-    int flags[2] = {Interruption::requested(),
-                    root && (MPI_Wtime() - last_table_write >= 60.)};
-    MPI_Allreduce(MPI_IN_PLACE, flags, 2, MPI_INT, MPI_MAX, communicator);
-    const int signal = flags[0];
+    // The third flag: a checkpoint is asked for (SIGUSR1 on any rank, or
+    // rank 0's clock says <Checkpoint/Wall-clock interval> has passed),
+    // written by run_phase() after this output.
+    int flags[3] = {Interruption::requested(),
+                    root && (MPI_Wtime() - last_table_write >= 60.),
+                    (Interruption::take_checkpoint_request() ||
+                     (root && checkpoint_minutes > 0 &&
+                      MPI_Wtime() - last_checkpoint_wall >=
+                        60 * checkpoint_minutes)) ?
+                      1 :
+                      0};
+    MPI_Allreduce(MPI_IN_PLACE, flags, 3, MPI_INT, MPI_MAX, communicator);
+    const int signal     = flags[0];
+    checkpoint_requested = flags[2] != 0;
 
     // The volume and the fault have intervals of their own: the fault's
     // files scale with the fault, so a large model may write its fault

@@ -176,6 +176,21 @@ namespace rupture
     /// stops by a signal or an error.
     void
     run_sequence();
+    /// A new run: the initial state and output, then the phases.
+    void
+    run_from_start();
+    /// A run continued from a checkpoint (--resume).
+    void
+    run_continued();
+    /// The phases from the current one on (the loading phase, if any and
+    /// not over, then the dynamic phase), the current one after
+    /// @p steps_done of its steps.
+    void
+    run_phases(const unsigned int steps_done);
+    /// summary.json of a run stopped by an error, if the output directory
+    /// is open (never throws).
+    void
+    write_failure_summary(const std::string &message);
     /// The end of a run: the final state on the screen, summary.json.
     void
     finish_run();
@@ -189,7 +204,9 @@ namespace rupture
     unsigned int checkpoint_interval  = 0;
     double       checkpoint_minutes   = 0;
     double       last_checkpoint_wall = 0;
-    bool         resume               = false;
+    /// Set by write_step_output(): a checkpoint is due after this step.
+    bool checkpoint_requested = false;
+    bool resume               = false;
     /// The checkpoint a resumed run continues from (a directory).
     std::string resume_from;
     /// The run's parameters as written to parameters.prm (ShortPRM).
@@ -211,6 +228,9 @@ namespace rupture
     /// Refuse a checkpoint written with other parameters, naming the entry.
     void
     check_checkpoint_parameters(ParameterHandler &prm) const;
+    /// The fields a checkpoint holds.
+    std::vector<VectorType *>
+    checkpoint_fields();
     /// Write a checkpoint of the state after the current step. Collective.
     void
     write_checkpoint();
