@@ -47,6 +47,20 @@ namespace rupture
                           "computed and limited by the friction strength; "
                           "for the explicit central-difference scheme. The "
                           "penalties are then not used.");
+        prm.declare_entry(
+          "Split-node friction time",
+          "centred",
+          Patterns::Selection("centred|end of step"),
+          "With 'traction at split nodes' and a friction law of the slip "
+          "rate: when the friction is evaluated. 'centred' (second order "
+          "in time): the traction of a step meets the strength at the slip "
+          "rate of that instant (the mean of the slip rates of the steps "
+          "before and after it) with the state evolved up to it over the "
+          "slip of the step before, as the central-difference scheme holds "
+          "velocities. 'end of step': the former update, the strength at "
+          "the slip rate of the next step with the state evolved over it "
+          "(first order in time; kept for comparison). Laws of the slip "
+          "path (slip weakening) are the same with both.");
         prm.declare_entry("Plus side",
                           "plane",
                           Patterns::Selection("plane|material ids"),
@@ -186,6 +200,8 @@ namespace rupture
       auto fault = std::make_unique<Fault<dim>>();
       fault->split_node_method =
         (prm.get("Model") == "traction at split nodes");
+      fault->centred_split_node =
+        (prm.get("Split-node friction time") == "centred");
       const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
       fault->side_by_plane        = (prm.get("Plus side") == "plane");
       fault->plane_point          = Point<dim>(Utilities::parse_vector<dim>(

@@ -306,6 +306,20 @@ namespace rupture
 
 
     double
+    Chester::coefficient_at_rate(const Point<3> &x,
+                                 const State    &state,
+                                 const double    V,
+                                 double         &derivative) const
+    {
+      const Constants c      = LawUtilities::constants(functions, x, state);
+      double          unused = 0;
+      return friction(
+        c, V, state.variables.at(0), state.variables.at(1), derivative, unused);
+    }
+
+
+
+    double
     Chester::cohesion(const Point<3> &, const State &) const
     {
       return 0;
@@ -327,9 +341,12 @@ namespace rupture
       const double    V      = LawUtilities::slip_rate(slip_increment, dt);
       const double    T      = old.variables.at(1);
       double          unused = 0;
-      const double    theta  = evolve(c, old.variables[0], V, T, dt, unused);
       const double    T_new =
         (dt > 0) ? heat(c, T, std::abs(shear_traction) * V, dt) : T;
+      // theta evolves at the step's mean temperature (second order in the
+      // coupling, for the split nodes' time-centred update).
+      const double theta =
+        evolve(c, old.variables[0], V, 0.5 * (T + T_new), dt, unused);
       AssertThrow(std::isfinite(theta) && std::isfinite(T_new) && T_new > 0,
                   ExcMessage("The state of Chester's law left the finite "
                              "numbers" +

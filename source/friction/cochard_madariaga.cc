@@ -139,6 +139,21 @@ namespace rupture
 
 
 
+    double
+    CochardMadariaga::strength_at_rate(const Point<3> &x,
+                                       const State    &state,
+                                       const double    V,
+                                       const double,
+                                       double &derivative_rate,
+                                       double &derivative_pressure) const
+    {
+      const Constants c   = LawUtilities::constants(functions, x, state);
+      derivative_pressure = 0;
+      return strength_of_rate(c, std::max(V, 0.), derivative_rate);
+    }
+
+
+
     void
     CochardMadariaga::check_uniqueness(const Point<3> &x,
                                        const State    &old,

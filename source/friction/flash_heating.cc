@@ -257,6 +257,19 @@ namespace rupture
 
 
     double
+    FlashHeating::coefficient_at_rate(const Point<3> &x,
+                                      const State    &state,
+                                      const double    V,
+                                      double         &derivative) const
+    {
+      const Constants c      = LawUtilities::constants(functions, x, state);
+      double          unused = 0;
+      return friction(c, V, state.variables.at(0), derivative, unused);
+    }
+
+
+
+    double
     FlashHeating::cohesion(const Point<3> &, const State &) const
     {
       return 0;

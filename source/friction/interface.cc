@@ -57,6 +57,37 @@ namespace rupture
 
 
 
+    double
+    Interface::coefficient_at_rate(const Point<3> &x,
+                                   const State    &state,
+                                   const double,
+                                   double &derivative) const
+    {
+      double       unused = 0;
+      const double mu     = coefficient(x, state, 0., 0., unused);
+      derivative          = 0;
+      return mu;
+    }
+
+
+
+    double
+    Interface::strength_at_rate(const Point<3> &x,
+                                const State    &state,
+                                const double    V,
+                                const double    pressure,
+                                double         &derivative_rate,
+                                double         &derivative_pressure) const
+    {
+      double       dmu    = 0;
+      const double mu     = coefficient_at_rate(x, state, V, dmu);
+      derivative_rate     = dmu * pressure;
+      derivative_pressure = mu;
+      return mu * pressure + cohesion(x, state);
+    }
+
+
+
     void
     Interface::set_time(const double time)
     {

@@ -244,6 +244,24 @@ namespace rupture
 
 
     double
+    TwoStateVariables::coefficient_at_rate(const Point<3> &x,
+                                           const State    &state,
+                                           const double    V,
+                                           double         &derivative) const
+    {
+      const Constants c      = LawUtilities::constants(functions, x, state);
+      double          unused = 0;
+      // mu depends on the states through their sum.
+      return friction(c,
+                      V,
+                      state.variables.at(0) + state.variables.at(1),
+                      derivative,
+                      unused);
+    }
+
+
+
+    double
     TwoStateVariables::cohesion(const Point<3> &, const State &) const
     {
       return 0;

@@ -458,6 +458,12 @@ namespace rupture
         // Trial state of the last assemble().
         ContactResponse<dim> trial;
         Tensor<1, dim>       trial_slip;
+        /// The time-centred split-node update of a law of the slip rate:
+        /// the state evolved to the time of the step's traction (over the
+        /// slip of the step before), and the slip velocity there, which
+        /// commit() takes.
+        Friction::State trial_state;
+        Tensor<1, dim>  trial_slip_velocity;
       };
 
       Point<3>
@@ -522,11 +528,33 @@ namespace rupture
                               const double          dt,
                               ContactResponse<dim> &r) const;
 
+      /**
+       * The time-centred split-node traction of a pair under a friction
+       * law of the slip rate (second order in time; see the .cc file).
+       * Evolves the pair's state to the time of the traction into
+       * pair.trial_state, sets pair.trial_slip_velocity and the friction,
+       * slip increment and status of @p r.
+       */
+      Tensor<1, dim>
+      centred_rate_traction(NodePair             &pair,
+                            const Point<3>       &x,
+                            const Tensor<1, dim> &stick_traction,
+                            const double          tn,
+                            const Tensor<1, dim> &inverse_sum,
+                            const double          c,
+                            const double          dt,
+                            const Tensor<1, dim> &slip,
+                            ContactResponse<dim> &r) const;
+
       MPI_Comm communicator;
 
       // Parameters.
-      bool                                 split_node_method = false;
-      bool                                 side_by_plane     = true;
+      bool split_node_method = false;
+      /// <Fault/Split-node friction time>: true for the time-centred
+      /// update of laws of the slip rate, false for the former one (the
+      /// friction of the slip rate over the next step, first order).
+      bool                                 centred_split_node = true;
+      bool                                 side_by_plane      = true;
       Point<dim>                           plane_point;
       Tensor<1, dim>                       plane_normal;
       std::vector<types::material_id>      plus_materials;

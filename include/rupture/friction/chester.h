@@ -73,6 +73,12 @@ namespace rupture
                   double         &derivative) const override;
 
       double
+      coefficient_at_rate(const Point<3> &x,
+                          const State    &state,
+                          const double    V,
+                          double         &derivative) const override;
+
+      double
       cohesion(const Point<3> &x, const State &state) const override;
 
       bool
@@ -91,6 +97,13 @@ namespace rupture
       state_output(const State &state) const override
       {
         return state.variables;
+      }
+
+      /// The temperature follows the frictional heating.
+      bool
+      state_depends_on_traction() const override
+      {
+        return true;
       }
 
       void

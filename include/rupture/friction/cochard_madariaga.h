@@ -68,6 +68,14 @@ namespace rupture
                double         &derivative_increment,
                double         &derivative_pressure) const override;
 
+      double
+      strength_at_rate(const Point<3> &x,
+                       const State    &state,
+                       const double    V,
+                       const double    pressure,
+                       double         &derivative_rate,
+                       double         &derivative_pressure) const override;
+
       void
       check_uniqueness(const Point<3> &x,
                        const State    &old,

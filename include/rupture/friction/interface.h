@@ -109,6 +109,48 @@ namespace rupture
                double         &derivative_pressure) const;
 
       /**
+       * The friction coefficient at the slip rate @p V (>= 0, m/s) with the
+       * state variables of @p state as they are (not evolved over a step),
+       * and its derivative with respect to V (s/m). The split-node method
+       * of the explicit scheme evaluates friction this way at the time of
+       * the traction, with the state evolved up to that time by
+       * update_state() (second order in time). Laws of the slip rate
+       * override it; the default, for laws of the slip path, is their
+       * coefficient without further slip.
+       */
+      virtual double
+      coefficient_at_rate(const Point<3> &x,
+                          const State    &state,
+                          const double    V,
+                          double         &derivative) const;
+
+      /**
+       * The shear strength (Pa) at the slip rate @p V with the state held
+       * as it is, pressed by @p pressure (>= 0, Pa), and its derivatives
+       * with respect to V (Pa s/m) and to the pressure: the
+       * coefficient_at_rate() times the pressure plus the cohesion, unless
+       * a law overrides it (as strength()).
+       */
+      virtual double
+      strength_at_rate(const Point<3> &x,
+                       const State    &state,
+                       const double    V,
+                       const double    pressure,
+                       double         &derivative_rate,
+                       double         &derivative_pressure) const;
+
+      /**
+       * Whether update_state() uses the shear traction (laws with
+       * frictional heating): the time-centred split-node update then
+       * corrects the state with the mean traction over the step.
+       */
+      virtual bool
+      state_depends_on_traction() const
+      {
+        return false;
+      }
+
+      /**
        * A step's slip rate V solves
        *   |T_stick| - Z V = strength(V dt),
        * with Z (Pa s/m) the impedance of the node. It has one solution only

@@ -63,6 +63,12 @@ namespace rupture
                   double         &derivative) const override;
 
       double
+      coefficient_at_rate(const Point<3> &x,
+                          const State    &state,
+                          const double    V,
+                          double         &derivative) const override;
+
+      double
       cohesion(const Point<3> &x, const State &state) const override;
 
       bool
