@@ -1,7 +1,9 @@
 // A reduced TPV101-2D (prm/tpv101-2d/tpv101-2d.prm, regularised
 // rate-and-state friction with the aging law, the smooth nucleation pulse
 // and the velocity-strengthening border): 250 m cells instead of 100 m, to
-// t = 5 s instead of 12 s, on one rank and on two. Checked:
+// t = 5 s instead of 12 s, in a box of 40 km x 12 km instead of 60 km x
+// 30 km (its absorbing sides take the waves the larger box would let
+// pass), on one rank and on two. Checked:
 // - the rupture nucleates at the hypocentre and spreads both ways: the
 //   stations at 0, +-3 and +-6 km rupture (slip rate above 1 mm/s), later
 //   the farther they are, symmetrically (the two sides within one step);
@@ -51,7 +53,16 @@ main(int argc, char **argv)
                                        "--set",
                                        "Output/Output interval=-1",
                                        "--set",
-                                       "Scene/Box/Number of cells=240, 120",
+                                       "Scene/Box/Number of cells=160, 48",
+                                       "--set",
+                                       "Scene/Box/Lower corner=-20000, -6000",
+                                       "--set",
+                                       "Scene/Box/Upper corner=20000, 6000",
+                                       "--set",
+                                       "Fault/Output/Stations=faultst000: 0, 0; "
+                                               "faultst030: 3000, 0; faultst-030: "
+                                               "-3000, 0; faultst060: 6000, 0; "
+                                               "faultst-060: -6000, 0",
                                        "--set",
                                        "Time integration/End time=5"});
   if (root)

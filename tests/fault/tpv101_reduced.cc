@@ -1,8 +1,10 @@
 // A reduced 3-D TPV101 (prm/tpv101/tpv101.prm, regularised rate-and-state
 // friction with the aging law, the velocity-strengthening border, the
 // initial slip velocity of 1e-12 m/s and the smooth nucleation pulse) on
-// 1500 m cells instead of 100 m, far too coarse for the rupture to run, but
-// enough to check the 3-D set-up through the benchmark's outputs:
+// 1500 m cells instead of 100 m, in a box of 48 km x 12 km x 33 km around
+// the core (graded cells, absorbing sides) instead of 120 km x 90 km x
+// 100 km, far too coarse for the rupture to run, but enough to check the
+// 3-D set-up through the benchmark's outputs:
 // - the initial state follows from the traction: log10(theta) = 9.2058 at
 //   the hypocentre (theta = 1.606e9 s where a = 0.008) and 13.2058 far
 //   out in the strengthening border (a = 0.016), from the statistics;
@@ -36,7 +38,11 @@ main(int argc, char **argv)
     "--set",
     "Output/Output interval=-1",
     "--set",
-    "Scene/Box/Number of cells=24, 2, 14"};
+    "Scene/Box/Number of cells=24, 2, 14",
+    "--set",
+    "Scene/Box/Lower corner=-24000, -6000, -16500",
+    "--set",
+    "Scene/Box/Upper corner=24000, 6000, 16500"};
 
   std::vector<std::string> args = {prm};
   args.insert(args.end(), coarse.begin(), coarse.end());

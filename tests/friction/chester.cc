@@ -159,12 +159,13 @@ main(int argc, char **argv)
                 jump - before,
                 direct,
                 std::abs(jump - before - direct) < 1e-9 ? "agree" : "DIFFER");
-    // Hold T2 (the reservoir is at T1: hold it by resetting it).
+    // Hold T2: the same law with its reservoir at T2 (theta evolves at
+    // the mean temperature of a step, which must stay T2).
+    // (Its constants, which a state caches, are those of that law.)
+    const auto held  = make("regularized", std::to_string(T2));
+    state.parameters = start(*held, 0, T2).parameters;
     for (unsigned int i = 0; i < 100; ++i)
-      {
-        state              = run(*law, state, V, 0, 10 * d_c / V, 1);
-        state.variables[1] = T2;
-      }
+      state = run(*held, state, V, 0, 10 * d_c / V, 1);
     const double after = law->coefficient(origin, state, V * dt, dt, d);
     std::printf("   after 1000 d_c: mu = %.8f, eq. 4.9 at T2 %.8f: %s\n",
                 after,
