@@ -225,7 +225,10 @@ def plot(results, steps, path):
         if y0 > 0:
             ax.loglog([x0, x1], [y0, y0 * (x1 / x0) ** 2], ":k", lw=1)
             ax.loglog([x0, x1], [y0, y0 * (x1 / x0)], "-.k", lw=1)
-        ax.set_xlabel("time step")
+        ax.set_xticks(dts)
+        ax.set_xticks([], minor=True)
+        ax.set_xticklabels(["%.4g" % x for x in dts])
+        ax.set_xlabel("time step dt")
         ax.set_title(kind + (" (relative)" if ERRORS[kind][1] else ""))
         ax.grid(True, which="both", alpha=0.3)
     axes[0].set_ylabel("error against the reference")
