@@ -8,6 +8,7 @@
 
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -388,14 +389,68 @@ namespace rupture
             std::vector<std::string> chain;
             check_includes(parameter_file, chain);
           }
+        // deal.II names the file and line of a .prm file's mistakes, but
+        // not of a .json or .xml file's, and Boost's parsers name neither.
+        const auto has_suffix = [&](const std::string &suffix) {
+          return parameter_file.size() >= suffix.size() &&
+                 parameter_file.compare(parameter_file.size() - suffix.size(),
+                                        suffix.size(),
+                                        suffix) == 0;
+        };
+        const bool        json = has_suffix(".json");
+        const std::string in_file =
+          (json || has_suffix(".xml")) ?
+            "In the parameter file <" + parameter_file + ">: " :
+            std::string();
         try
           {
             prm.parse_input(parameter_file, "", false, true);
           }
-        catch (const ExceptionBase &e)
+        catch (const boost::property_tree::file_parser_error &e)
           {
             AssertThrow(false,
-                        ExcMessage(Utilities::message_of(e) +
+                        ExcMessage(
+                          "The parameter file <" + parameter_file + ">, line " +
+                          std::to_string(e.line()) + ", is not " +
+                          (json ? "valid JSON" : "valid XML") + ": " +
+                          e.message() + ". " +
+                          (json ? "Check the brackets, commas and quotes "
+                                  "near that line." :
+                                  "Check that every element near that line "
+                                  "is closed and that the file has one root "
+                                  "element.") +
+                          " A .prm file ('rupture --print-parameters prm' "
+                          "writes a complete one) is the usual form."));
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::string text = Utilities::message_of(e);
+            // deal.II wraps Boost's JSON error, "<unspecified file>(LINE):
+            // WHAT", and names an unknown entry of a .json or .xml file in
+            // words of its own.
+            const auto json_at = text.find("<unspecified file>(");
+            const auto unknown = text.find("You can't ask for entry <");
+            if (json && json_at != std::string::npos)
+              {
+                const auto open  = text.find('(', json_at);
+                const auto close = text.find("):", open);
+                if (close != std::string::npos)
+                  text = "line " + text.substr(open + 1, close - open - 1) +
+                         " is not valid JSON: " +
+                         dealii::Utilities::trim(text.substr(close + 2)) +
+                         ". Check the brackets, commas and quotes near that "
+                         "line.";
+              }
+            else if (unknown != std::string::npos)
+              {
+                const auto begin = unknown + 25;
+                const auto end   = text.find('>', begin);
+                text             = "<" + text.substr(begin, end - begin) +
+                       "> is not an entry of rupture here (an unknown name, "
+                       "or one of another subsection).";
+              }
+            AssertThrow(false,
+                        ExcMessage(in_file + text +
                                    " See 'rupture --print-parameters' for the "
                                    "entries and their allowed values."));
           }

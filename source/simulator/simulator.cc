@@ -1,4 +1,5 @@
 #include <rupture/base/interruption.h>
+#include <rupture/base/time_units.h>
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
 
@@ -503,9 +504,12 @@ namespace rupture
     const double       end_time = start + duration;
     const unsigned int n_steps =
       static_cast<unsigned int>(std::ceil(duration / time_step - 1e-9));
-    pcout << "   Time step " << std::setprecision(6) << time_step << " s, "
-          << n_steps << " steps to t = " << (start - dynamic_start) + duration
-          << " s\n";
+    pcout << "   Time step " << std::setprecision(6) << time_step << " s"
+          << Utilities::readable_time(time_step, duration) << ", " << n_steps
+          << " steps to t = " << (start - dynamic_start) + duration << " s"
+          << Utilities::readable_time((start - dynamic_start) + duration,
+                                      duration)
+          << "\n";
     const double loop_start = MPI_Wtime();
     // The time loop's wall time, for the performance summary, however the
     // phase ends.
@@ -562,7 +566,8 @@ namespace rupture
         if (step % screen_interval == 0 || i == n_steps || stop || ends_early)
           {
             pcout << "*** Step " << step << ": t = " << std::scientific
-                  << std::setprecision(4) << phase_time << " s";
+                  << std::setprecision(4) << phase_time << " s"
+                  << Utilities::readable_time(phase_time, duration);
             if (in_dynamic_phase)
               pcout << " (" << time << " s since the start of the run)";
             pcout << ", dt = " << std::setprecision(2) << time_step << " s";

@@ -191,6 +191,14 @@ main(int argc, char **argv)
   write("include_a.prm", base + "include include_b.prm\n");
   write("include_b.prm", "include include_a.prm\n");
   write("deep.json", std::string(100000, '[') + std::string(100000, ']'));
+  write("broken.json",
+        "{\n  \"Dimension\": 2,\n  \"Output directory\" \"x\"\n}\n");
+  write("broken.xml",
+        "<?xml version=\"1.0\"?>\n<ParameterHandler>\n"
+        "<Dimension><value>2</value>\n</ParameterHandler>\n");
+  write("unknown.xml",
+        "<?xml version=\"1.0\"?>\n<ParameterHandler>"
+        "<Foo><value>1</value></Foo></ParameterHandler>\n");
 
   check("unknown entry", {"unknown_entry.prm"});
   check("malformed value", {"malformed_value.prm"});
@@ -276,6 +284,9 @@ main(int argc, char **argv)
   check("parameter file that includes itself", {"self_include.prm"});
   check("parameter files that include each other", {"include_a.prm"});
   check("JSON parameter file nested 100 000 deep", {"deep.json"});
+  check("JSON parameter file with a missing colon", {"broken.json"});
+  check("XML parameter file with an element not closed", {"broken.xml"});
+  check("XML parameter file with an unknown entry", {"unknown.xml"});
   check("body force that is not finite",
         {"valid.prm", "--set", "Loads/Body force=1/0; 0"});
   check("gravity whose force density overflows",
