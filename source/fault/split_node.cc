@@ -83,6 +83,41 @@ namespace rupture
 
 
       /**
+       * The shear part of a pair's stick traction: its magnitude s, its
+       * direction e (zero where s = 0) and the pair's impedance along e,
+       * Z = 1 / (c dt A e.(1/M+ + 1/M-)e) (@p factor = c dt A; zero where
+       * the sides' inverse masses along e are), the traction change per
+       * unit slip rate over the next step.
+       */
+      template <int dim>
+      struct ShearImpedance
+      {
+        ShearImpedance(const Tensor<1, dim> &stick_traction,
+                       const double          tn,
+                       const Tensor<1, dim> &normal,
+                       const Tensor<1, dim> &inverse_sum,
+                       const double          factor)
+        {
+          const Tensor<1, dim> shear = stick_traction - tn * normal;
+          magnitude                  = shear.norm();
+          double inverse             = 0;
+          if (magnitude > 0)
+            {
+              direction = shear / magnitude;
+              for (unsigned int d = 0; d < dim; ++d)
+                inverse += inverse_sum[d] * direction[d] * direction[d];
+            }
+          impedance = (inverse > 0) ? 1. / (factor * inverse) : 0.;
+        }
+
+        double         magnitude = 0;
+        Tensor<1, dim> direction;
+        double         impedance = 0;
+      };
+
+
+
+      /**
        * The magnitude of the shear part of a pair's traction of the last
        * step (its initial traction before the first step).
        */
@@ -247,18 +282,11 @@ namespace rupture
       // safeguarded by bisection (geometric while the bracket spans
       // decades: regularised laws slip at any shear, at rates from 1e-30
       // m/s up).
-      const Tensor<1, dim> shear = stick_traction - tn * pair.normal;
-      const double         s     = shear.norm();
-      const double         p     = -tn;
-      Tensor<1, dim>       e;
-      double               inverse = 0;
-      if (s > 0)
-        {
-          e = shear / s;
-          for (unsigned int d = 0; d < dim; ++d)
-            inverse += inverse_sum[d] * e[d] * e[d];
-        }
-      const double Z = (inverse > 0) ? 1. / (c * dt * pair.area * inverse) : 0.;
+      const ShearImpedance<dim> shear(
+        stick_traction, tn, pair.normal, inverse_sum, c * dt * pair.area);
+      const double          s = shear.magnitude, Z = shear.impedance;
+      const double          p = -tn;
+      const Tensor<1, dim> &e = shear.direction;
       // mu is the strength's derivative with respect to the pressure (the
       // friction coefficient), dmu that of mu with the slip increment.
       const auto g = [&](const double V, double &dg, double &mu, double &dmu) {
@@ -321,22 +349,15 @@ namespace rupture
       // over the next step. Both the time of the rate and of the state are
       // thereby centred on the traction's: second order in dt (Kaneko et
       // al. 2008 reach the same with a predictor-corrector on V_k).
-      const Tensor<1, dim> shear = stick_traction - tn * pair.normal;
-      const double         s     = shear.norm();
-      const double         p     = -tn;
-      Tensor<1, dim>       e;
-      double               inverse = 0;
-      if (s > 0)
-        {
-          e = shear / s;
-          for (unsigned int d = 0; d < dim; ++d)
-            inverse += inverse_sum[d] * e[d] * e[d];
-        }
-      const double Z = (inverse > 0) ? 1. / (c * dt * pair.area * inverse) : 0.;
-      const Tensor<1, dim> before   = (slip - pair.slip) / dt;
-      const double         v_before = before * e;
-      double               mu = 0, dS_dV = 0;
-      const auto           g = [&](const double W, double &dg) {
+      const ShearImpedance<dim> shear(
+        stick_traction, tn, pair.normal, inverse_sum, c * dt * pair.area);
+      const double          s = shear.magnitude, Z = shear.impedance;
+      const double          p        = -tn;
+      const Tensor<1, dim> &e        = shear.direction;
+      const Tensor<1, dim>  before   = (slip - pair.slip) / dt;
+      const double          v_before = before * e;
+      double                mu = 0, dS_dV = 0;
+      const auto            g = [&](const double W, double &dg) {
         const double V  = 0.5 * (v_before + W);
         double       dS = 0;
         const double S  = friction_law->strength_at_rate(
