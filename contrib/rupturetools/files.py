@@ -112,3 +112,14 @@ def value_at(times, values, t):
                 return b
             return a + (t - t0) / (t1 - t0) * (b - a)
     return values[-1]
+
+
+def station_metrics(rows):
+    """The SCEC measures of a fault station's rows (t, h-slip, h-slip-rate,
+    ...): the rupture time (the slip rate first above 1 mm/s, interpolated),
+    the peak slip rate and the final slip, by magnitude."""
+    times = [r[0] for r in rows]
+    rates = [r[2] for r in rows]
+    return {"rupture": crossing_time(times, rates, 1e-3),
+            "peak": max(abs(v) for v in rates) if rows else None,
+            "slip": abs(rows[-1][1]) if rows else None}

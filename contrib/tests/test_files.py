@@ -67,3 +67,12 @@ def test_crossing_time_and_value_at():
     assert files.value_at(t, v, 3.0) == pytest.approx(0.01)
     with pytest.raises(ValueError):
         files.value_at(t, v, 4.0)
+
+
+def test_station_metrics():
+    rows = [[0.0, 0.0, 0.0], [1.0, 0.1, 0.0005], [2.0, 0.5, 0.0015],
+            [3.0, 0.9, -0.002]]
+    m = files.station_metrics(rows)
+    assert m["rupture"] == pytest.approx(1.5)
+    assert m["peak"] == pytest.approx(0.002)
+    assert m["slip"] == pytest.approx(0.9)
