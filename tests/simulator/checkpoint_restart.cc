@@ -16,9 +16,18 @@
 // 50 implicit dynamic steps), continued from a checkpoint in the loading
 // phase (step 70), at the step that ended it (75) and in the dynamic phase
 // (119): the stations the same to the last digit, the statistics within
-// 1e-12 (on two ranks, continued in the dynamic phase, one kinetic energy
-// of one step differs in its last bit while every later row is the same:
-// not the state, a sum).
+// 1e-12 on one rank. On two ranks a continued implicit step is not the
+// uninterrupted one to the last bit: in the first step after step 119 the
+// linear solves of the second Newton iteration end with other round-off
+// (residual 3.0e-16 against 3.1e-16), and the last Newton iteration, at a
+// residual of 6e-13, takes another line-search factor (0.0156 against
+// 0.0625), all of it noise below Newton's tolerance. What that noise changes
+// depends on the machine (on one machine one kinetic energy in its 14th
+// digit, on another more than 1e-12), and an iteration count can change
+// by one. So on two ranks the statistics are compared within 1e-8, as for
+// a checkpoint continued on another number of ranks, and the iteration
+// counts not at all; the stations (8 digits) stay exact. The same holds
+// for the implicit run continued between sub-steps.
 
 #include <deal.II/base/mpi.h>
 
@@ -46,10 +55,28 @@ namespace
     return text.substr(begin, text.find('\n', begin) - begin);
   }
 
+  /// The numbers (from 0) of the columns of a statistics file whose names
+  /// (lines "# n: name") contain @p word.
+  std::vector<unsigned int>
+  columns_named(const std::string &file, const std::string &word)
+  {
+    std::vector<unsigned int> columns;
+    std::istringstream        in(tests::read_file(file));
+    std::string               line;
+    while (std::getline(in, line))
+      if (line.rfind("# ", 0) == 0 && line.find(word) != std::string::npos)
+        columns.push_back(std::stoi(line.substr(2)) - 1);
+    return columns;
+  }
+
   /// Whether two tables are equal: bit for bit (@p tolerance 0), or within
-  /// a relative @p tolerance (absolute below 1e-12).
+  /// a relative @p tolerance (absolute below 1e-12), leaving out the
+  /// columns in @p skip.
   bool
-  same(const std::string &a, const std::string &b, const double tolerance)
+  same(const std::string               &a,
+       const std::string               &b,
+       const double                     tolerance,
+       const std::vector<unsigned int> &skip = {})
   {
     const auto x = tests::read_statistics(a), y = tests::read_statistics(b);
     if (x.size() != y.size() || x.empty())
@@ -59,7 +86,9 @@ namespace
         if (x[i].size() != y[i].size())
           return false;
         for (unsigned int j = 0; j < x[i].size(); ++j)
-          if (tolerance == 0 ? x[i][j] != y[i][j] :
+          if (std::find(skip.begin(), skip.end(), j) != skip.end())
+            continue;
+          else if (tolerance == 0 ? x[i][j] != y[i][j] :
                                std::abs(x[i][j] - y[i][j]) >
                                  std::max(tolerance * std::abs(x[i][j]), 1e-10))
             return false;
@@ -273,6 +302,8 @@ main(int argc, char **argv)
         fs::remove_all(directory + "/checkpoint/step-000000125");
       MPI_Barrier(comm);
       const int code = run({}, directory, resume, comm, errors);
+      // (See the top of this file for the tolerance on two ranks.)
+      const double tolerance = (n_ranks == 1 ? 1e-12 : 1e-8);
       if (root)
         {
           const std::string log = tests::read_file(directory + "/log.txt");
@@ -280,7 +311,7 @@ main(int argc, char **argv)
           std::printf(
             "  every %s steps: exit code %d, %s; stations as the "
             "uninterrupted run's to the last digit: %s, statistics within "
-            "1e-12: %s\n",
+            "%g%s: %s\n",
             interval.c_str(),
             code,
             at == std::string::npos ?
@@ -290,7 +321,14 @@ main(int argc, char **argv)
                 same("sequence-full/side.dat", directory + "/side.dat", 0) ?
               "yes" :
               "no",
-            same("sequence-full/statistics", directory + "/statistics", 1e-12) ?
+            tolerance,
+            n_ranks == 1 ? "" : " (iteration counts aside)",
+            same("sequence-full/statistics",
+                 directory + "/statistics",
+                 tolerance,
+                 n_ranks == 1 ?
+                   std::vector<unsigned int>() :
+                   columns_named("sequence-full/statistics", "iterations")) ?
               "yes" :
               "no");
         }
@@ -322,10 +360,17 @@ main(int argc, char **argv)
         std::printf(
           "after a step cut: exit code %d, continued after step "
           "21, then 2 sub-steps per step: %s; statistics as the "
-          "uninterrupted run's, to the last digit: %s\n",
+          "uninterrupted run's, %s: %s\n",
           code,
           rest.find("taken as 2 sub-steps") != std::string::npos ? "yes" : "no",
-          same("substeps-full/statistics", "substeps-21/statistics", 0) ?
+          n_ranks == 1 ? "to the last digit" :
+                         "within 1e-8 (iteration counts aside)",
+          same("substeps-full/statistics",
+               "substeps-21/statistics",
+               n_ranks == 1 ? 0 : 1e-8,
+               n_ranks == 1 ?
+                 std::vector<unsigned int>() :
+                 columns_named("substeps-full/statistics", "iterations")) ?
             "yes" :
             "no");
       }
