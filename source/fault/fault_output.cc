@@ -1,5 +1,6 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
+#include <rupture/fault/face_nodes.h>
 #include <rupture/fault/fault_output.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -185,63 +186,33 @@ namespace rupture
                 double best = std::numeric_limits<double>::max();
                 for (const auto &face : faces)
                   {
-                    std::vector<Point<dim>> v;
-                    for (const auto key : face)
-                      v.push_back(location.count(key) ? location[key] :
-                                                        Point<dim>());
                     bool present = true;
                     for (const auto key : face)
                       present = present && location.count(key);
                     if (!present)
                       continue; // a face whose border nodes are welded
-                    double              xi = 0, eta = 0, diameter = 0;
-                    std::vector<double> w;
+                    const unsigned int degree =
+                      FaceNodes::degree<dim>(face.size());
+                    std::vector<Point<dim>> v;
+                    for (const unsigned int c :
+                         FaceNodes::corners<dim>(degree))
+                      v.push_back(location[face[c]]);
+                    double diameter = 0;
                     for (const auto &p : v)
                       diameter = std::max(diameter, p.distance(v[0]));
-                    if (dim == 2)
-                      {
-                        const Tensor<1, dim> e = v[1] - v[0];
-                        xi = (s.location - v[0]) * e / e.norm_square();
-                        w  = {1 - xi, xi};
-                      }
-                    else
-                      for (unsigned int it = 0; it < 20; ++it)
-                        {
-                          w = {(1 - xi) * (1 - eta),
-                               xi * (1 - eta),
-                               (1 - xi) * eta,
-                               xi * eta};
-                          Point<dim> x;
-                          for (unsigned int k = 0; k < 4; ++k)
-                            x += w[k] * v[k];
-                          const Tensor<1, dim> dx =
-                            (v[1] - v[0]) * (1 - eta) + (v[3] - v[2]) * eta;
-                          const Tensor<1, dim> de =
-                            (v[2] - v[0]) * (1 - xi) + (v[3] - v[1]) * xi;
-                          const Tensor<1, dim> r = s.location - x;
-                          const double a = dx * dx, b = dx * de, c = de * de;
-                          const double det = a * c - b * b;
-                          xi += (c * (dx * r) - b * (de * r)) / det;
-                          eta += (a * (de * r) - b * (dx * r)) / det;
-                        }
-                    if (dim == 3)
-                      w = {(1 - xi) * (1 - eta),
-                           xi * (1 - eta),
-                           (1 - xi) * eta,
-                           xi * eta};
-                    Point<dim> x;
-                    for (unsigned int k = 0; k < w.size(); ++k)
-                      x += w[k] * v[k];
-                    const double tol = 1e-6 * diameter;
-                    const double outside =
-                      std::max({-xi, xi - 1, -eta, eta - 1, 0.});
+                    const auto xi = FaceNodes::coordinates<dim>(v, s.location);
+                    const Point<dim> x = FaceNodes::point<dim>(v, xi);
+                    const double     tol     = 1e-6 * diameter;
+                    double           outside = 0;
+                    for (const double c : xi)
+                      outside = std::max({outside, -c, c - 1});
                     const double distance =
                       x.distance(s.location) + outside * diameter;
                     best = std::min(best, distance);
                     if (distance <= tol)
                       {
                         s.nodes   = face;
-                        s.weights = w;
+                        s.weights = FaceNodes::weights<dim>(degree, xi);
                         break;
                       }
                   }
@@ -389,17 +360,22 @@ namespace rupture
       std::map<types::global_dof_index, unsigned int> index;
       for (unsigned int i = 0; i < records.size(); ++i)
         index[records[i].key] = i;
+      // Each face as sub-cells between its nodes (one cell at degree 1),
+      // where all its nodes are fault nodes.
       std::vector<std::vector<unsigned int>> cells;
       for (const auto &face : faces)
         {
-          std::vector<unsigned int> c;
+          bool present = true;
           for (const auto key : face)
-            if (index.count(key))
-              c.push_back(index[key]);
-          if (c.size() == face.size())
+            present = present && index.count(key);
+          if (!present)
+            continue;
+          for (const auto &sub :
+               FaceNodes::sub_cells<dim>(FaceNodes::degree<dim>(face.size())))
             {
-              if (dim == 3)
-                std::swap(c[2], c[3]); // lexicographic to VTK order
+              std::vector<unsigned int> c;
+              for (const unsigned int k : sub)
+                c.push_back(index[face[k]]);
               cells.push_back(c);
             }
         }

@@ -3,6 +3,7 @@
 // the pairs outside the fault region), and what the solvers need of the
 // pairs (sparsity, DoF pairs, the level interfaces of multigrid).
 
+#include <rupture/fault/face_nodes.h>
 #include <rupture/fault/fault.h>
 
 #include <deal.II/base/mpi.h>
@@ -69,16 +70,17 @@ namespace rupture
       std::vector<types::global_dof_index> dm(fe0.n_dofs_per_face()),
         dp(fe1.n_dofs_per_face());
       const unsigned int n_nodes = fe0.n_dofs_per_face() / dim;
-      // Where each face node sits, in the face's own coordinates: the
-      // support points of the FE_Q on a face (vertices, then line and face
-      // midpoints for degree 2), mapped d-linearly from the face's
-      // vertices. Only fault nodes are located, instead of a map of the
+      // Where each face node sits: the support point of its DoF in the
+      // minus cell (the FE_Q's unit support points, mapped d-linearly from
+      // the cell's vertices). Taken through the cell's own DoF order, which
+      // needs no care for the orientation of the face's lines at degree 3
+      // and above. Only fault nodes are located, instead of a map of the
       // support points of every DoF (some 80 B per DoF of the whole mesh).
-      const std::vector<Point<dim - 1>> &unit_face_points =
-        fe0.base_element(0).get_unit_face_support_points();
-      AssertThrow(unit_face_points.size() == n_nodes &&
-                    fe0.base_element(0).degree <= 2,
+      const std::vector<Point<dim>> &unit_points =
+        fe0.base_element(0).get_unit_support_points();
+      AssertThrow(fe0.base_element(0).n_dofs_per_face() == n_nodes,
                   ExcInternalError());
+      std::vector<types::global_dof_index> cell_dofs(fe0.n_dofs_per_cell());
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial() && cell->active_fe_index() == 0)
           for (const auto f : cell->face_indices())
@@ -169,13 +171,45 @@ namespace rupture
                   const auto cp = fe1.face_system_to_component_index(i, f);
                   plus[cp.second][cp.first - dim] = dp[i];
                 }
+              cell->get_dof_indices(cell_dofs);
+              std::map<types::global_dof_index, Point<dim>> located;
+              for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+                {
+                  const auto ci = fe0.system_to_component_index(i);
+                  if (ci.first == 0 && fe0.has_support_on_face(i, f))
+                    {
+                      Point<dim> x;
+                      for (const unsigned int v : cell->vertex_indices())
+                        x += GeometryInfo<dim>::d_linear_shape_function(
+                               unit_points[ci.second], v) *
+                             cell->vertex(v);
+                      located[cell_dofs[i]] = x;
+                    }
+                }
               if (is_fault && cell->is_locally_owned())
                 {
-                  std::vector<types::global_dof_index> keys;
+                  // The face's nodes in lexicographic order (FaceNodes),
+                  // found from where they sit between its corners.
+                  const unsigned int degree = fe0.base_element(0).degree;
+                  std::vector<Point<dim>> corners;
                   for (unsigned int v = 0;
                        v < GeometryInfo<dim>::vertices_per_face;
                        ++v)
-                    keys.push_back(minus[v][0]);
+                    corners.push_back(located.at(minus[v][0]));
+                  std::vector<types::global_dof_index> keys(
+                    n_nodes, numbers::invalid_dof_index);
+                  for (unsigned int k = 0; k < n_nodes; ++k)
+                    {
+                      const auto xi = FaceNodes::coordinates<dim>(
+                        corners, located.at(minus[k][0]));
+                      unsigned int index = 0;
+                      for (unsigned int d = dim - 1; d-- > 0;)
+                        index = index * (degree + 1) +
+                                FaceNodes::nearest_point(degree, xi[d]);
+                      AssertThrow(keys[index] == numbers::invalid_dof_index,
+                                  ExcInternalError());
+                      keys[index] = minus[k][0];
+                    }
                   result.owned_faces.push_back(keys);
                 }
               for (unsigned int k = 0; k < n_nodes; ++k)
@@ -183,13 +217,9 @@ namespace rupture
                   NodePair pair;
                   pair.minus = minus[k];
                   pair.plus  = plus[k];
-                  for (unsigned int v = 0;
-                       v < GeometryInfo<dim>::vertices_per_face;
-                       ++v)
-                    pair.location +=
-                      GeometryInfo<dim - 1>::d_linear_shape_function(
-                        unit_face_points[k], v) *
-                      face->vertex(v);
+                  const auto at = located.find(minus[k][0]);
+                  AssertThrow(at != located.end(), ExcInternalError());
+                  pair.location = at->second;
                   pair.shear_modulus =
                     shear_modulus ? (*shear_modulus)[cell->material_id()] : 0.;
                   (is_fault ? fault_nodes : welded_nodes)

@@ -272,6 +272,14 @@ namespace rupture
             i.matrix_free.cell_loop(
               &Implementation::template local_apply<2>, &i, dst, src, true);
             break;
+          case 3:
+            i.matrix_free.cell_loop(
+              &Implementation::template local_apply<3>, &i, dst, src, true);
+            break;
+          case 4:
+            i.matrix_free.cell_loop(
+              &Implementation::template local_apply<4>, &i, dst, src, true);
+            break;
           default:
             i.matrix_free.cell_loop(
               &Implementation::template local_apply<-1>, &i, dst, src, true);
@@ -304,6 +312,12 @@ namespace rupture
                 break;
               case 2:
                 i.template local_diagonals<2>(data, dst, mass_diagonal, range);
+                break;
+              case 3:
+                i.template local_diagonals<3>(data, dst, mass_diagonal, range);
+                break;
+              case 4:
+                i.template local_diagonals<4>(data, dst, mass_diagonal, range);
                 break;
               default:
                 i.template local_diagonals<-1>(data, dst, mass_diagonal, range);

@@ -264,8 +264,9 @@ namespace rupture
       gather(const std::set<types::global_dof_index> *keys = nullptr) const;
 
       /**
-       * The fault faces as lists of node keys of their vertices (deal.II's
-       * lexicographic order), gathered on rank 0.
+       * The fault faces as lists of the keys of all their nodes
+       * (lexicographic, see FaceNodes: the corners first and last),
+       * gathered on rank 0.
        */
       std::vector<std::vector<types::global_dof_index>>
       gather_faces() const;
@@ -586,7 +587,8 @@ namespace rupture
       /// The pairs' contact blocks (area times the tangent of the last
       /// assemble()): the matrix-free tangent and its block Jacobi.
       Operators::PairBlocks<dim> contact_blocks;
-      /// Fault faces of locally owned cells, as vertex keys.
+      /// Fault faces of locally owned cells, as the keys of their nodes
+      /// (lexicographic, see FaceNodes).
       std::vector<std::vector<types::global_dof_index>> owned_faces;
       double                                            initial_force_scale = 0;
       unsigned int                                      n_global_split      = 0;

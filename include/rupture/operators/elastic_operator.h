@@ -31,7 +31,8 @@ namespace rupture
      * the stored matrix, assembled through the same constraints, gives
      * too (up to its placeholder diagonal in constrained rows).
      *
-     * It works on Q1 and Q2 (other degrees through a slower generic path),
+     * It works on degrees 1 to 4 with kernels compiled for each (other
+     * degrees through a slower generic path),
      * in 2-D and 3-D, on affine and general hexahedra (MatrixFree stores
      * one Jacobian per cell for affine cells and one per quadrature point
      * otherwise) and with hanging nodes. The implementation is hidden in
