@@ -80,9 +80,11 @@ namespace rupture
                         "benchmarks' resolution refers to), and the lumped "
                         "mass of the explicit scheme is the Gauss-Lobatto "
                         "one of spectral elements. The stable explicit "
-                        "step is computed for the degree (it shrinks "
-                        "faster than h/p); <Time integration/Courant "
-                        "fraction> is a fraction of it at every degree.");
+                        "step is computed for the degree (at equal node "
+                        "spacing it is 0.80, 0.67 and 0.56 times degree "
+                        "1's at degrees 2, 3 and 4); <Time "
+                        "integration/Courant fraction> is a fraction of it "
+                        "at every degree.");
       prm.declare_entry(
         "Stiffness operator",
         "matrix free",
