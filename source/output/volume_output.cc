@@ -5,6 +5,7 @@
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
@@ -37,12 +38,91 @@ namespace rupture
       template <int dim>
       struct ElementTable
       {
-        std::vector<unsigned int>   component;
-        std::vector<Tensor<1, dim>> gradient;
-        std::array<std::array<unsigned int, dim>,
-                   GeometryInfo<dim>::vertices_per_cell>
-          vertex_dof;
+        std::vector<unsigned int> component;
+        /// The gradients of the shape functions at the centre of each
+        /// sub-cell (index [sub-cell][shape function]).
+        std::vector<std::vector<Tensor<1, dim>>> gradient;
+        /// The gradients of the vertices' (Q1 geometry) shape functions
+        /// there ([sub-cell][vertex]).
+        std::vector<std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell>>
+          vertex_gradient;
       };
+
+      /**
+       * The nodes of one element of the collection, in lexicographic
+       * order: the local DoF of each displacement component at each node
+       * and its unit support point, and the element's degree p (p^dim
+       * sub-cells between the nodes).
+       */
+      template <int dim>
+      struct NodeTable
+      {
+        unsigned int                            degree = 1;
+        std::vector<std::array<unsigned int, dim>> node_dof;
+        std::vector<Point<dim>>                 unit_point;
+      };
+
+      /// The Gauss-Lobatto points of degree @p degree on [0, 1].
+      std::vector<double>
+      lobatto_points(const unsigned int degree)
+      {
+        if (degree == 1)
+          return {0., 1.};
+        std::vector<double>    x;
+        const QGaussLobatto<1> q(degree + 1);
+        for (unsigned int i = 0; i <= degree; ++i)
+          x.push_back(q.point(i)[0]);
+        return x;
+      }
+
+      template <int dim>
+      NodeTable<dim>
+      node_table(const FiniteElement<dim> &fe)
+      {
+        NodeTable<dim> table;
+        table.degree                 = fe.degree;
+        const unsigned int        p  = fe.degree;
+        const std::vector<double> gl = lobatto_points(p);
+        const unsigned int        n  = dealii::Utilities::fixed_power<dim>(p + 1);
+        table.node_dof.resize(n);
+        table.unit_point.resize(n);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const auto [component, node] = fe.system_to_component_index(i);
+            const auto base = fe.component_to_base_index(component).first;
+            const Point<dim> x =
+              fe.base_element(base).get_unit_support_points()[node];
+            unsigned int lex = 0;
+            for (unsigned int d = dim; d-- > 0;)
+              {
+                unsigned int best = 0;
+                for (unsigned int k = 1; k <= p; ++k)
+                  if (std::abs(gl[k] - x[d]) < std::abs(gl[best] - x[d]))
+                    best = k;
+                lex = lex * (p + 1) + best;
+              }
+            table.node_dof[lex][component % dim] = i;
+            table.unit_point[lex]                = x;
+          }
+        return table;
+      }
+
+      /// The centre of sub-cell @p sub (lexicographic) of a cell of degree
+      /// @p degree, in unit coordinates.
+      template <int dim>
+      Point<dim>
+      sub_cell_centre(const unsigned int degree, unsigned int sub)
+      {
+        const std::vector<double> gl = lobatto_points(degree);
+        Point<dim>                centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const unsigned int i = sub % degree;
+            sub /= degree;
+            centre[d] = 0.5 * (gl[i] + gl[i + 1]);
+          }
+        return centre;
+      }
 
     } // namespace
 
@@ -107,25 +187,20 @@ namespace rupture
         dof_handler.get_triangulation().signals.any_change.connect(
           [this]() { pieces.clear(); });
 
-      // The local DoF of each component at each vertex, per element.
-      const auto &fes = dof_handler.get_fe_collection();
-      std::vector<std::array<std::array<unsigned int, dim>, n_vertices>>
-        vertex_dof(fes.size());
+      // The nodes of each element, in lexicographic order.
+      const auto                 &fes = dof_handler.get_fe_collection();
+      std::vector<NodeTable<dim>> tables(fes.size());
       for (unsigned int f = 0; f < fes.size(); ++f)
-        {
-          const FiniteElement<dim> &fe = fes[f];
-          if (fe.n_dofs_per_cell() == 0)
-            continue;
-          AssertThrow(fe.n_dofs_per_vertex() == dim,
-                      ExcMessage("Volume output: each vertex must carry the "
-                                 "dim components of the displacement."));
-          for (unsigned int i = 0; i < n_vertices * dim; ++i)
-            vertex_dof[f][i / dim]
-                      [fe.system_to_component_index(i).first % dim] = i;
-        }
+        if (fes[f].n_dofs_per_cell() > 0)
+          {
+            AssertThrow(fes[f].n_dofs_per_vertex() == dim,
+                        ExcMessage("Volume output: each vertex must carry the "
+                                   "dim components of the displacement."));
+            tables[f] = node_table(fes[f]);
+          }
 
-      // Points are shared by the cells of a piece: one point per vertex and
-      // side of the fault (the key is the vertex's first DoF).
+      // Points are shared by the cells of a piece: one point per node and
+      // side of the fault (the key is the node's first DoF).
       const bool compress = (compression != Compression::none);
       const std::array<unsigned int, 8> vtk_order = {{0, 1, 3, 2, 4, 5, 7, 6}};
       std::vector<int>                  point_of(n_local, -1);
@@ -170,34 +245,62 @@ namespace rupture
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            if (pieces.empty() || pieces.back().cells.size() == cells_per_piece)
+            const unsigned int    f     = cell->active_fe_index();
+            const NodeTable<dim> &table = tables[f];
+            const unsigned int    p1    = table.degree + 1;
+            const unsigned int    n_sub =
+              dealii::Utilities::fixed_power<dim>(table.degree);
+            // A piece takes whole cells, at least one.
+            if (pieces.empty() ||
+                (!pieces.back().cells.empty() &&
+                 pieces.back().cells.size() + n_sub > cells_per_piece))
               {
                 if (!pieces.empty())
                   finish();
                 pieces.emplace_back();
               }
-            Piece             &p = pieces.back();
-            const unsigned int f = cell->active_fe_index();
+            Piece &p = pieces.back();
             dofs.resize(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_indices(dofs);
-            p.cells.push_back(cell);
-            for (unsigned int k = 0; k < n_vertices; ++k)
+            for (unsigned int sub = 0; sub < n_sub; ++sub)
               {
-                const unsigned int v   = vtk_order[k];
-                const int          key = local(dofs[vertex_dof[f][v][0]]);
-                if (point_of[key] < 0)
+                p.cells.push_back(cell);
+                p.sub_cell.push_back(sub);
+                // The sub-cell's lowest node, lexicographic.
+                unsigned int origin = 0;
+                for (unsigned int d = 0, rest = sub, stride = 1; d < dim;
+                     ++d, rest /= table.degree, stride *= p1)
+                  origin += (rest % table.degree) * stride;
+                for (unsigned int k = 0; k < n_vertices; ++k)
                   {
-                    point_of[key] = p.point_dofs.size();
-                    touched.push_back(key);
-                    std::array<int, dim> point_dofs;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      point_dofs[d] = local(dofs[vertex_dof[f][v][d]]);
-                    p.point_dofs.push_back(point_dofs);
-                    const Point<dim> &x = cell->vertex(v);
-                    for (unsigned int d = 0; d < 3; ++d)
-                      points.push_back(d < dim ? x[d] : 0.);
+                    const unsigned int v = vtk_order[k];
+                    unsigned int       node = origin;
+                    for (unsigned int d = 0, stride = 1; d < dim;
+                         ++d, stride *= p1)
+                      node += ((v >> d) & 1) * stride;
+                    const int key = local(dofs[table.node_dof[node][0]]);
+                    if (point_of[key] < 0)
+                      {
+                        point_of[key] = p.point_dofs.size();
+                        touched.push_back(key);
+                        std::array<int, dim> point_dofs;
+                        for (unsigned int d = 0; d < dim; ++d)
+                          point_dofs[d] =
+                            local(dofs[table.node_dof[node][d]]);
+                        p.point_dofs.push_back(point_dofs);
+                        Point<dim> x;
+                        if (table.degree == 1)
+                          x = cell->vertex(v);
+                        else
+                          for (const unsigned int w : cell->vertex_indices())
+                            x += GeometryInfo<dim>::d_linear_shape_function(
+                                   table.unit_point[node], w) *
+                                 cell->vertex(w);
+                        for (unsigned int d = 0; d < 3; ++d)
+                          points.push_back(d < dim ? x[d] : 0.);
+                      }
+                    p.connectivity.push_back(point_of[key]);
                   }
-                p.connectivity.push_back(point_of[key]);
               }
           }
       // A rank without cells writes one empty piece.
@@ -254,9 +357,9 @@ namespace rupture
           pieces_n_local != map.NumMyElements())
         build_pieces(dof_handler, local, map.NumMyElements());
 
-      // For the stress: the gradients at the centre of the reference cell
-      // of each element's shape functions and of the vertices' (Q1
-      // geometry) shape functions. A Q1 element's DoFs are the points'.
+      // For the stress: the gradients at the centre of each sub-cell of
+      // each element's shape functions and of the vertices' (Q1 geometry)
+      // shape functions. A Q1 element's DoFs are the points'.
       Point<dim> centre;
       for (unsigned int d = 0; d < dim; ++d)
         centre[d] = 0.5;
@@ -272,11 +375,22 @@ namespace rupture
           const FiniteElement<dim> &fe = fes[f];
           all_q1                       = all_q1 && (fe.n_dofs_per_cell() == 0 ||
                               fe.n_dofs_per_cell() == n_vertices * dim);
+          if (fe.n_dofs_per_cell() == 0)
+            continue;
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            tables[f].component.push_back(
+              fe.system_to_component_index(i).first % dim);
+          const unsigned int n_sub = dealii::Utilities::fixed_power<dim>(fe.degree);
+          tables[f].gradient.resize(n_sub);
+          tables[f].vertex_gradient.resize(n_sub);
+          for (unsigned int sub = 0; sub < n_sub; ++sub)
             {
-              tables[f].component.push_back(
-                fe.system_to_component_index(i).first % dim);
-              tables[f].gradient.push_back(fe.shape_grad(i, centre));
+              const Point<dim> x = sub_cell_centre<dim>(fe.degree, sub);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                tables[f].gradient[sub].push_back(fe.shape_grad(i, x));
+              for (unsigned int v = 0; v < n_vertices; ++v)
+                tables[f].vertex_gradient[sub][v] =
+                  GeometryInfo<dim>::d_linear_shape_function_gradient(x, v);
             }
         }
       const std::array<unsigned int, 8> vtk_order = {{0, 1, 3, 2, 4, 5, 7, 6}};
@@ -349,11 +463,16 @@ namespace rupture
               values.assign(9 * p.cells.size(), 0.f);
               for (unsigned int c = 0; c < p.cells.size(); ++c)
                 {
-                  const auto    &cell = p.cells[c];
-                  Tensor<2, dim> jacobian, reference_gradient;
+                  const auto              &cell = p.cells[c];
+                  const ElementTable<dim> &table =
+                    tables[cell->active_fe_index()];
+                  const unsigned int sub = p.sub_cell[c];
+                  Tensor<2, dim>     jacobian, reference_gradient;
                   for (unsigned int v = 0; v < n_vertices; ++v)
                     jacobian += outer_product(Tensor<1, dim>(cell->vertex(v)),
-                                              vertex_gradient[v]);
+                                              all_q1 ?
+                                                vertex_gradient[v] :
+                                                table.vertex_gradient[sub][v]);
                   if (all_q1)
                     for (unsigned int k = 0; k < n_vertices; ++k)
                       {
@@ -366,13 +485,11 @@ namespace rupture
                       }
                   else
                     {
-                      const ElementTable<dim> &table =
-                        tables[cell->active_fe_index()];
                       dofs.resize(table.component.size());
                       cell->get_dof_indices(dofs);
                       for (unsigned int j = 0; j < dofs.size(); ++j)
                         reference_gradient[table.component[j]] +=
-                          u_values[local(dofs[j])] * table.gradient[j];
+                          u_values[local(dofs[j])] * table.gradient[sub][j];
                     }
                   const Tensor<2, dim> gradient =
                     reference_gradient * invert(jacobian);

@@ -1,12 +1,13 @@
 // The volume snapshots (Output::VolumeOutput, Output::VtuFile), read back
-// byte by byte as VTK reads them: 2-D and 3-D, Q1 and Q2, a distorted
-// mesh, the fault's hp split (one FESystem per side, FE_Nothing for the
-// other) with a jump of the displacement across the interface, each of the
-// three compression modes, and pieces of at most 7 cells. The displacement
-// is linear (A x, plus a constant c on the far side of the split), so every
-// point must carry exactly that value, every cell the stress C : sym(A),
-// and the points of a piece must be shared by its cells: one point per
-// vertex and side of the split.
+// byte by byte as VTK reads them: 2-D and 3-D, Q1 to Q4 (a cell of degree
+// p written as p^dim sub-cells between its nodes), a distorted mesh, the
+// fault's hp split (one FESystem per side, FE_Nothing for the other) with a
+// jump of the displacement across the interface, each of the three
+// compression modes, and pieces of at most 7 VTK cells (whole mesh cells,
+// at least one). The displacement is linear (A x, plus a constant c on the
+// far side of the split), so every point must carry exactly that value,
+// every cell the stress C : sym(A), and the points of a piece must be
+// shared by its cells: one point per node and side of the split.
 
 #include <rupture/material/elastic_material.h>
 #include <rupture/output/directory.h>
@@ -300,7 +301,7 @@ namespace
     // Points shared within a piece: at most the (vertex, side) pairs of its
     // cells; over all pieces, the distinct (vertex, side) pairs are those
     // of the mesh.
-    const unsigned int n_vertices_1d = 4 + 1;
+    const unsigned int n_vertices_1d = 4 * degree + 1;
     const unsigned int n_mesh_points =
       std::pow(n_vertices_1d, dim) +
       (split ? std::pow(n_vertices_1d, dim - 1) : 0);
@@ -339,4 +340,6 @@ main(int argc, char **argv)
   check<3>(1, true, "mesh", 4);
   check<3>(2, false, "none", 5);
   check<3>(1, false, "all", 6);
+  check<2>(4, true, "mesh", 7);
+  check<3>(3, true, "all", 8);
 }

@@ -113,7 +113,12 @@ namespace rupture
        */
       struct Piece
       {
+        /// The mesh cell of each VTK cell: a cell of degree p is written
+        /// as p^dim sub-cells between its nodes.
         std::vector<typename DoFHandler<dim>::active_cell_iterator> cells;
+        /// Which sub-cell of its mesh cell each VTK cell is
+        /// (lexicographic).
+        std::vector<unsigned int> sub_cell;
         /// Each cell's points, in VTK's vertex order.
         std::vector<std::int32_t> connectivity;
         /// The local (ghosted) index of each point's dim components.
