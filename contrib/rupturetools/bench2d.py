@@ -1,0 +1,48 @@
+"""The on-fault stations of the 2-D SCEC benchmarks (TPV101-2D, TPV103-2D,
+TPV205-2D): what a run gives at each, and how far it is from a reference
+run."""
+
+import math
+import os
+
+from . import files
+
+# Along-strike positions of the stations, in hundreds of metres (the SCEC
+# names: faultst075 is at 7.5 km); each but 0 also at -x.
+STATIONS = [0, 15, 30, 45, 60, 75, 90, 120, 150]
+
+
+def station_values(out, stations=STATIONS):
+    """Rupture time, peak slip rate and final slip at each station of the
+    run in directory @p out: {station: {"rupture", "peak", "slip"}}, the mean
+    of +x and -x (None where a station does not rupture)."""
+    values = {}
+    for s in stations:
+        names = ["faultst%03d" % s] + (["faultst-%03d" % s] if s else [])
+        ms = [files.station_metrics(files.read_station(
+            os.path.join(out, n + ".dat")).rows) for n in names]
+        v = {}
+        for key in ("rupture", "peak", "slip"):
+            xs = [m[key] for m in ms]
+            v[key] = None if any(x is None for x in xs) else sum(xs) / len(xs)
+        values[s] = v
+    return values
+
+
+def errors(values, reference, stations=STATIONS):
+    """The largest error over @p stations of @p values against
+    @p reference (both as station_values gives them, keys as str or int):
+    absolute for rupture times (s), relative for peak slip rate and final
+    slip; inf where one ruptures and the other does not."""
+    e = {"rupture": 0.0, "peak": 0.0, "slip": 0.0}
+    get = lambda table, s: table[str(s)] if str(s) in table else table[s]
+    for s in stations:
+        mine, ref = get(values, s), get(reference, s)
+        for key in e:
+            if mine[key] is None or ref[key] is None:
+                if mine[key] != ref[key]:
+                    e[key] = math.inf
+                continue
+            d = abs(mine[key] - ref[key])
+            e[key] = max(e[key], d if key == "rupture" else d / abs(ref[key]))
+    return e

@@ -1,0 +1,68 @@
+"""Tests of rupturetools.bench2d and of contrib/degree-study's mesh sizing,
+on station files made here."""
+
+import importlib.machinery
+import importlib.util
+import math
+import os
+
+from rupturetools import bench2d
+
+HEADER = "# problem=TPV101-2D\nt h-slip h-slip-rate h-shear-stress\n"
+
+
+def write_station(directory, name, start, peak, slip):
+    """A station that starts slipping at @p start at rate @p peak for as long
+    as it takes to slip @p slip."""
+    rows = []
+    t = 0.0
+    while t < 10:
+        rate = peak if start <= t < start + slip / peak else 0.0
+        done = min(max(t - start, 0.0) * peak, slip)
+        rows.append("%g %g %g 70" % (t, done, rate))
+        t += 0.01
+    (directory / (name + ".dat")).write_text(HEADER + "\n".join(rows) + "\n")
+
+
+def test_station_values_average_both_sides(tmp_path):
+    write_station(tmp_path, "faultst000", 0.5, 2.0, 1.0)
+    write_station(tmp_path, "faultst045", 2.0, 4.0, 2.0)
+    write_station(tmp_path, "faultst-045", 2.2, 2.0, 1.0)
+    v = bench2d.station_values(str(tmp_path), stations=[0, 45])
+    assert abs(v[0]["rupture"] - 0.5) < 0.011
+    assert abs(v[45]["rupture"] - 2.1) < 0.011
+    assert abs(v[45]["peak"] - 3.0) < 1e-12
+    assert abs(v[45]["slip"] - 1.5) < 1e-9
+
+
+def test_errors_absolute_in_time_relative_otherwise():
+    ref = {"0": {"rupture": 1.0, "peak": 10.0, "slip": 2.0},
+           "45": {"rupture": 2.0, "peak": 5.0, "slip": 4.0}}
+    mine = {0: {"rupture": 1.1, "peak": 11.0, "slip": 2.0},
+            45: {"rupture": 1.95, "peak": 5.0, "slip": 3.0}}
+    e = bench2d.errors(mine, ref, stations=[0, 45])
+    assert abs(e["rupture"] - 0.1) < 1e-12
+    assert abs(e["peak"] - 0.1) < 1e-12
+    assert abs(e["slip"] - 0.25) < 1e-12
+    mine[45]["rupture"] = None
+    assert math.isinf(bench2d.errors(mine, ref, stations=[0, 45])["rupture"])
+
+
+def load_degree_study():
+    path = os.path.join(os.path.dirname(__file__), "..", "degree-study")
+    loader = importlib.machinery.SourceFileLoader("degree_study", path)
+    spec = importlib.util.spec_from_loader("degree_study", loader)
+    module = importlib.util.module_from_spec(spec)
+    loader.exec_module(module)
+    return module
+
+
+def test_degree_study_mesh_keeps_the_fault_on_a_mesh_plane():
+    study = load_degree_study()
+    for p in (1, 2, 3, 4):
+        for spacing in (200, 100, 50, 25):
+            nx, ny, half_x, half_y = study.mesh(p, spacing)
+            assert ny % 2 == 0
+            assert abs(half_x - 30000) <= p * spacing / 2
+            assert abs(half_y - 15000) <= p * spacing
+    assert study.mesh(4, 100) == (150, 76, 30000, 15200)
