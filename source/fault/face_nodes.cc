@@ -50,8 +50,8 @@ namespace rupture
       {
         const unsigned int p =
           (dim == 2) ? n_nodes - 1 :
-                       static_cast<unsigned int>(std::lround(
-                         std::sqrt(static_cast<double>(n_nodes)))) -
+                       static_cast<unsigned int>(
+                         std::lround(std::sqrt(static_cast<double>(n_nodes)))) -
                          1;
         AssertThrow(p >= 1 && (dim == 2 ? p + 1 : (p + 1) * (p + 1)) == n_nodes,
                     ExcInternalError());
@@ -104,12 +104,12 @@ namespace rupture
         double &a = xi[0], &b = xi[dim - 2];
         for (unsigned int it = 0; it < 20; ++it)
           {
-            const Tensor<1, dim> da =
-              (corners[1] - corners[0]) * (1 - b) + (corners[3] - corners[2]) * b;
-            const Tensor<1, dim> db =
-              (corners[2] - corners[0]) * (1 - a) + (corners[3] - corners[1]) * a;
-            const Tensor<1, dim> r   = x - point<dim>(corners, xi);
-            const double         aa  = da * da, ab = da * db, bb = db * db;
+            const Tensor<1, dim> da = (corners[1] - corners[0]) * (1 - b) +
+                                      (corners[3] - corners[2]) * b;
+            const Tensor<1, dim> db = (corners[2] - corners[0]) * (1 - a) +
+                                      (corners[3] - corners[1]) * a;
+            const Tensor<1, dim> r  = x - point<dim>(corners, xi);
+            const double         aa = da * da, ab = da * db, bb = db * db;
             const double         det = aa * bb - ab * ab;
             a += (bb * (da * r) - ab * (db * r)) / det;
             b += (aa * (db * r) - ab * (da * r)) / det;
@@ -161,31 +161,39 @@ namespace rupture
             if (dim == 2)
               cells.push_back({i, i + 1});
             else
-              cells.push_back(
-                {j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i});
+              cells.push_back({j * n + i,
+                               j * n + i + 1,
+                               (j + 1) * n + i + 1,
+                               (j + 1) * n + i});
         return cells;
       }
 
 
 
-      template unsigned int degree<2>(unsigned int);
-      template unsigned int degree<3>(unsigned int);
-      template std::vector<unsigned int> corners<2>(unsigned int);
-      template std::vector<unsigned int> corners<3>(unsigned int);
-      template Point<2> point<2>(const std::vector<Point<2>> &,
-                                 const std::array<double, 1> &);
-      template Point<3> point<3>(const std::vector<Point<3>> &,
-                                 const std::array<double, 2> &);
+      template unsigned int
+      degree<2>(unsigned int);
+      template unsigned int
+      degree<3>(unsigned int);
+      template std::vector<unsigned int>
+      corners<2>(unsigned int);
+      template std::vector<unsigned int>
+      corners<3>(unsigned int);
+      template Point<2>
+      point<2>(const std::vector<Point<2>> &, const std::array<double, 1> &);
+      template Point<3>
+      point<3>(const std::vector<Point<3>> &, const std::array<double, 2> &);
       template std::array<double, 1>
       coordinates<2>(const std::vector<Point<2>> &, const Point<2> &);
       template std::array<double, 2>
       coordinates<3>(const std::vector<Point<3>> &, const Point<3> &);
-      template std::vector<double> weights<2>(unsigned int,
-                                              const std::array<double, 1> &);
-      template std::vector<double> weights<3>(unsigned int,
-                                              const std::array<double, 2> &);
-      template std::vector<std::vector<unsigned int>> sub_cells<2>(unsigned int);
-      template std::vector<std::vector<unsigned int>> sub_cells<3>(unsigned int);
+      template std::vector<double>
+      weights<2>(unsigned int, const std::array<double, 1> &);
+      template std::vector<double>
+      weights<3>(unsigned int, const std::array<double, 2> &);
+      template std::vector<std::vector<unsigned int>>
+      sub_cells<2>(unsigned int);
+      template std::vector<std::vector<unsigned int>>
+      sub_cells<3>(unsigned int);
     } // namespace FaceNodes
   }   // namespace Fault
 } // namespace rupture

@@ -39,6 +39,18 @@ namespace rupture
           "-7500'. A station may lie anywhere on the fault (values are "
           "interpolated); one off the fault is an error.");
         prm.declare_entry(
+          "Down-dip origin",
+          "",
+          Patterns::Anything(),
+          "The height (last coordinate, m) at which the down-dip distances "
+          "of the SCEC files (the station headers and rupture_time.dat) are "
+          "zero; they grow down the fault, as the depth below it over the "
+          "sine of the dip. Empty: the model's top (right for a free "
+          "surface, as in TPV102). SCEC's whole-space benchmarks count from "
+          "the fault's top edge: TPV3, TPV101 and TPV103 with the "
+          "hypocentre at z = 0, 7.5 km below that edge, need 7500. 3-D only "
+          "(2-D files have no down-dip distance).");
+        prm.declare_entry(
           "Along-strike direction",
           "",
           Patterns::Anything(),
@@ -72,6 +84,7 @@ namespace rupture
       prm.enter_subsection("Output");
       station_text  = prm.get("Stations");
       strike_text   = prm.get("Along-strike direction");
+      origin_text   = dealii::Utilities::trim(prm.get("Down-dip origin"));
       interval_text = dealii::Utilities::trim(prm.get("Output interval"));
       prm.leave_subsection();
       if (!interval_text.empty())
@@ -125,8 +138,20 @@ namespace rupture
                             const MPI_Comm    comm,
                             const double      surface)
     {
-      communicator    = comm;
-      this->surface   = surface;
+      communicator  = comm;
+      this->surface = surface;
+      if (!origin_text.empty())
+        {
+          const std::vector<double> z =
+            Utilities::parse_doubles(origin_text,
+                                     "Fault/Output/Down-dip origin");
+          AssertThrow(z.size() == 1,
+                      ExcMessage("<Fault/Output/Down-dip origin> takes one "
+                                 "number (a height in m), or nothing for the "
+                                 "model's top, but was given <" +
+                                 origin_text + ">."));
+          this->surface = z[0];
+        }
       origin          = fault.reference_point();
       const auto all  = fault.gather();
       faces           = fault.gather_faces();
@@ -194,14 +219,13 @@ namespace rupture
                     const unsigned int degree =
                       FaceNodes::degree<dim>(face.size());
                     std::vector<Point<dim>> v;
-                    for (const unsigned int c :
-                         FaceNodes::corners<dim>(degree))
+                    for (const unsigned int c : FaceNodes::corners<dim>(degree))
                       v.push_back(location[face[c]]);
                     double diameter = 0;
                     for (const auto &p : v)
                       diameter = std::max(diameter, p.distance(v[0]));
                     const auto xi = FaceNodes::coordinates<dim>(v, s.location);
-                    const Point<dim> x = FaceNodes::point<dim>(v, xi);
+                    const Point<dim> x       = FaceNodes::point<dim>(v, xi);
                     const double     tol     = 1e-6 * diameter;
                     double           outside = 0;
                     for (const double c : xi)
@@ -541,7 +565,7 @@ namespace rupture
       out << "# problem = rupture rupture-time contours\n# author = rupture\n"
           << "# code = rupture\n# code_version = 0.1\n"
           << "# Column #1 = Distance along strike (m)\n"
-          << "# Column #2 = Distance down-dip from the surface (m)\n"
+          << "# Column #2 = Distance down-dip (m)\n"
           << "# Column #3 = Rupture time (s); 1.0E+09 where the fault did "
              "not rupture\n"
           << "j k t\n"

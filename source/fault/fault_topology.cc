@@ -190,7 +190,7 @@ namespace rupture
                 {
                   // The face's nodes in lexicographic order (FaceNodes),
                   // found from where they sit between its corners.
-                  const unsigned int degree = fe0.base_element(0).degree;
+                  const unsigned int      degree = fe0.base_element(0).degree;
                   std::vector<Point<dim>> corners;
                   for (unsigned int v = 0;
                        v < GeometryInfo<dim>::vertices_per_face;
@@ -200,8 +200,9 @@ namespace rupture
                     n_nodes, numbers::invalid_dof_index);
                   for (unsigned int k = 0; k < n_nodes; ++k)
                     {
-                      const auto xi = FaceNodes::coordinates<dim>(
-                        corners, located.at(minus[k][0]));
+                      const auto xi =
+                        FaceNodes::coordinates<dim>(corners,
+                                                    located.at(minus[k][0]));
                       unsigned int index = 0;
                       for (unsigned int d = dim - 1; d-- > 0;)
                         index = index * (degree + 1) +
@@ -215,8 +216,8 @@ namespace rupture
               for (unsigned int k = 0; k < n_nodes; ++k)
                 {
                   NodePair pair;
-                  pair.minus = minus[k];
-                  pair.plus  = plus[k];
+                  pair.minus    = minus[k];
+                  pair.plus     = plus[k];
                   const auto at = located.find(minus[k][0]);
                   AssertThrow(at != located.end(), ExcInternalError());
                   pair.location = at->second;

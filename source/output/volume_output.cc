@@ -44,7 +44,8 @@ namespace rupture
         std::vector<std::vector<Tensor<1, dim>>> gradient;
         /// The gradients of the vertices' (Q1 geometry) shape functions
         /// there ([sub-cell][vertex]).
-        std::vector<std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell>>
+        std::vector<
+          std::array<Tensor<1, dim>, GeometryInfo<dim>::vertices_per_cell>>
           vertex_gradient;
       };
 
@@ -57,9 +58,9 @@ namespace rupture
       template <int dim>
       struct NodeTable
       {
-        unsigned int                            degree = 1;
+        unsigned int                               degree = 1;
         std::vector<std::array<unsigned int, dim>> node_dof;
-        std::vector<Point<dim>>                 unit_point;
+        std::vector<Point<dim>>                    unit_point;
       };
 
       /// The Gauss-Lobatto points of degree @p degree on [0, 1].
@@ -83,13 +84,13 @@ namespace rupture
         table.degree                 = fe.degree;
         const unsigned int        p  = fe.degree;
         const std::vector<double> gl = lobatto_points(p);
-        const unsigned int        n  = dealii::Utilities::fixed_power<dim>(p + 1);
+        const unsigned int n = dealii::Utilities::fixed_power<dim>(p + 1);
         table.node_dof.resize(n);
         table.unit_point.resize(n);
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
             const auto [component, node] = fe.system_to_component_index(i);
-            const auto base = fe.component_to_base_index(component).first;
+            const auto       base = fe.component_to_base_index(component).first;
             const Point<dim> x =
               fe.base_element(base).get_unit_support_points()[node];
             unsigned int lex = 0;
@@ -273,7 +274,7 @@ namespace rupture
                   origin += (rest % table.degree) * stride;
                 for (unsigned int k = 0; k < n_vertices; ++k)
                   {
-                    const unsigned int v = vtk_order[k];
+                    const unsigned int v    = vtk_order[k];
                     unsigned int       node = origin;
                     for (unsigned int d = 0, stride = 1; d < dim;
                          ++d, stride *= p1)
@@ -285,8 +286,7 @@ namespace rupture
                         touched.push_back(key);
                         std::array<int, dim> point_dofs;
                         for (unsigned int d = 0; d < dim; ++d)
-                          point_dofs[d] =
-                            local(dofs[table.node_dof[node][d]]);
+                          point_dofs[d] = local(dofs[table.node_dof[node][d]]);
                         p.point_dofs.push_back(point_dofs);
                         Point<dim> x;
                         if (table.degree == 1)
@@ -380,7 +380,8 @@ namespace rupture
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
             tables[f].component.push_back(
               fe.system_to_component_index(i).first % dim);
-          const unsigned int n_sub = dealii::Utilities::fixed_power<dim>(fe.degree);
+          const unsigned int n_sub =
+            dealii::Utilities::fixed_power<dim>(fe.degree);
           tables[f].gradient.resize(n_sub);
           tables[f].vertex_gradient.resize(n_sub);
           for (unsigned int sub = 0; sub < n_sub; ++sub)
@@ -469,10 +470,10 @@ namespace rupture
                   const unsigned int sub = p.sub_cell[c];
                   Tensor<2, dim>     jacobian, reference_gradient;
                   for (unsigned int v = 0; v < n_vertices; ++v)
-                    jacobian += outer_product(Tensor<1, dim>(cell->vertex(v)),
-                                              all_q1 ?
-                                                vertex_gradient[v] :
-                                                table.vertex_gradient[sub][v]);
+                    jacobian +=
+                      outer_product(Tensor<1, dim>(cell->vertex(v)),
+                                    all_q1 ? vertex_gradient[v] :
+                                             table.vertex_gradient[sub][v]);
                   if (all_q1)
                     for (unsigned int k = 0; k < n_vertices; ++k)
                       {

@@ -63,7 +63,7 @@ main(int argc, char **argv)
     std::printf("2-D, TPV205-2D at 500 m node spacing:\n");
   for (unsigned int p = 1; p <= 4; ++p)
     {
-      const std::string dir = "tpv205-q" + std::to_string(p);
+      const std::string dir  = "tpv205-q" + std::to_string(p);
       const int         code = tests::run(
         {top + "prm/tpv205-2d/tpv205-2d.prm",
                  "--set",
@@ -82,10 +82,10 @@ main(int argc, char **argv)
                  "Scene/Box/Upper corner=30000, 12000",
                  "--set",
                  "Scene/Box/Number of cells=" + std::to_string(120 / p) + ", " +
-           std::to_string(48 / p),
+                   std::to_string(48 / p),
                  "--set",
                  "Fault/Output/Stations=faultst000: 0, 0; faultst045: 4500, 0; "
-                 "faultst-045: -4500, 0",
+                         "faultst-045: -4500, 0",
                  "--set",
                  "Time integration/End time=4"});
       if (!root)
@@ -117,9 +117,10 @@ main(int argc, char **argv)
                   r[3]);
     }
   if (root)
-    std::printf("  all stations rupture, all degrees within 0.15 s and 25 %% of Q1: "
-                "%s\n",
-                agree ? "yes" : "no");
+    std::printf(
+      "  all stations rupture, all degrees within 0.15 s and 25 %% of Q1: "
+      "%s\n",
+      agree ? "yes" : "no");
 
   agree = true;
   if (root)
@@ -144,14 +145,14 @@ main(int argc, char **argv)
                  "Fault/Fault region=(abs(x) <= 4500 && abs(z) <= 4500) ? 1 : 0",
                  "--set",
                  "Fault/Initial traction=(abs(x) <= 1500 && abs(z) <= 1500) ? "
-                 "81.6e6 : 70e6; -120e6; 0",
+                         "81.6e6 : 70e6; -120e6; 0",
                  "--set",
                  "Fault/Output/Stations=center: 0, 0, 0",
                  "--set",
                  "Time integration/Time step=0"});
       if (!root)
         continue;
-      const auto rows = tests::read_statistics(dir + "/center.dat");
+      const auto rows             = tests::read_statistics(dir + "/center.dat");
       const std::vector<double> r = {rupture_time(rows), final_value(rows, 1)};
       if (p == 1)
         first = r;

@@ -88,9 +88,10 @@ namespace
         for (unsigned int j = 0; j < x[i].size(); ++j)
           if (std::find(skip.begin(), skip.end(), j) != skip.end())
             continue;
-          else if (tolerance == 0 ? x[i][j] != y[i][j] :
-                               std::abs(x[i][j] - y[i][j]) >
-                                 std::max(tolerance * std::abs(x[i][j]), 1e-10))
+          else if (tolerance == 0 ?
+                     x[i][j] != y[i][j] :
+                     std::abs(x[i][j] - y[i][j]) >
+                       std::max(tolerance * std::abs(x[i][j]), 1e-10))
             return false;
       }
     return true;

@@ -25,16 +25,16 @@ main(int argc, char **argv)
         {
           const std::string directory =
             "output-" + std::to_string(p) + "-" + std::to_string(level);
-          const int code = tests::run(
-            {std::string(SOURCE_DIR) + "/inputs/mms_static.prm",
-             "--set",
-             "Discretization/Polynomial degree=" + std::to_string(p),
-             "--set",
-             "Discretization/Initial global refinement=" +
-               std::to_string(level),
-             "--set",
-             "Output directory=" + directory});
-          const auto   rows  = tests::read_statistics(directory + "/statistics");
+          const int code =
+            tests::run({std::string(SOURCE_DIR) + "/inputs/mms_static.prm",
+                        "--set",
+                        "Discretization/Polynomial degree=" + std::to_string(p),
+                        "--set",
+                        "Discretization/Initial global refinement=" +
+                          std::to_string(level),
+                        "--set",
+                        "Output directory=" + directory});
+          const auto   rows = tests::read_statistics(directory + "/statistics");
           const double error = rows.empty() ? -1 : rows.back().back();
           if (code != 0)
             std::printf("  run failed with exit code %d\n", code);

@@ -74,7 +74,8 @@ namespace rupture
        * Locate the stations on the fault (an error names a station that is
        * not on it) and set the strike and dip directions. @p surface is the
        * height of the model's top (its largest last coordinate), from which
-       * down-dip distances are measured, positive down, as in SCEC's files.
+       * down-dip distances are measured, positive down, as in SCEC's files,
+       * unless <Fault/Output/Down-dip origin> gives another height.
        */
       void
       setup(const Fault<dim> &fault,
@@ -134,7 +135,8 @@ namespace rupture
       strike_component(const Tensor<1, dim> &v) const;
       double
       dip_component(const Tensor<1, dim> &v) const;
-      /// The down-dip distance of @p x from the surface (3-D; 0 in 2-D):
+      /// The down-dip distance of @p x from the down-dip origin (3-D; 0 in
+      /// 2-D):
       /// its depth over the sine of the dip, or, on a horizontal fault,
       /// its distance down-dip from the plane point.
       double
@@ -144,6 +146,7 @@ namespace rupture
       std::string                                       station_text;
       std::string                                       strike_text;
       std::string                                       interval_text;
+      std::string                                       origin_text;
       std::vector<Station>                              stations;
       std::set<types::global_dof_index>                 station_keys;
       Tensor<1, dim>                                    strike;
