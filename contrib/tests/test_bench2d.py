@@ -57,12 +57,18 @@ def load_degree_study():
     return module
 
 
-def test_degree_study_mesh_keeps_the_fault_on_a_mesh_plane():
+def test_degree_study_mesh_puts_every_station_on_a_node():
     study = load_degree_study()
     for p in (1, 2, 3, 4):
+        nodes = [0.0, 1.0] if p % 2 else [0.0, 0.5, 1.0]
         for spacing in (200, 100, 50, 25):
+            h = study.cell_size(p, spacing)
+            assert h <= p * spacing + 1e-9
             nx, ny, half_x, half_y = study.mesh(p, spacing)
-            assert ny % 2 == 0
-            assert abs(half_x - 30000) <= p * spacing / 2
-            assert abs(half_y - 15000) <= p * spacing
-    assert study.mesh(4, 100) == (150, 76, 30000, 15200)
+            assert nx % 2 == 0 and ny % 2 == 0
+            assert abs(half_x - 30000) <= h and abs(half_y - 15000) <= h
+            for station in range(0, 15001, 1500):
+                xi = station / h - math.floor(station / h)
+                assert min(abs(xi - n) for n in nodes) < 1e-9, (p, spacing, station)
+    assert study.mesh(4, 100) == (160, 80, 30000, 15000)
+    assert study.cell_size(2, 100) == 200 and study.cell_size(3, 100) == 300

@@ -204,7 +204,15 @@ namespace rupture
         (prm.get("Split-node friction time") == "centred");
       const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
       fault->side_by_plane        = (prm.get("Plus side") == "plane");
-      fault->plane_point          = Point<dim>(Utilities::parse_vector<dim>(
+      AssertThrow(
+        !fault->side_by_plane ||
+          dealii::Utilities::trim(prm.get("Plus side material ids")).empty(),
+        ExcMessage("<Fault/Plus side material ids> is given, but <Fault/Plus "
+                   "side> is 'plane' (its default), which tells the sides "
+                   "apart by <Plane point> and <Plane normal> and ignores "
+                   "the ids. Set <Fault/Plus side> = material ids to use "
+                   "them, or leave <Plus side material ids> empty."));
+      fault->plane_point = Point<dim>(Utilities::parse_vector<dim>(
         prm.get("Plane point"), "Fault/Plane point", true));
       // The plane normal matters only for a fault given by a plane.
       fault->plane_normal[dim - 1] = 1;

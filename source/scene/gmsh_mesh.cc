@@ -251,13 +251,18 @@ namespace rupture
         const unsigned int expected = (version == "2.2") ? 1 : 4;
         std::ifstream      body(file_name);
         std::string        section;
+        unsigned int       line_number = 0, n_nodes_sections = 0,
+                     n_elements_sections = 0;
         while (std::getline(body, section))
           {
+            ++line_number;
             section = dealii::Utilities::trim(section);
             if (section != "$Nodes" && section != "$Elements")
               continue;
+            ++(section == "$Nodes" ? n_nodes_sections : n_elements_sections);
             std::string header;
             std::getline(body, header);
+            ++line_number;
             std::istringstream words(header);
             std::string        word;
             unsigned int       n_words = 0;
@@ -279,7 +284,46 @@ namespace rupture
                                              "4.1)")) +
                 ". Save the mesh again with Gmsh, or fix "
                 "the $MeshFormat line."));
+            // In 2.2 every node is a line "tag x y z": a broken body is
+            // named here, with its line, instead of by what follows from
+            // it (a mesh without boundaries or cells).
+            if (version == "2.2" && section == "$Nodes")
+              {
+                const unsigned long n = std::stoul(header);
+                for (unsigned long k = 0; k < n; ++k)
+                  {
+                    std::string node;
+                    const bool  read =
+                      static_cast<bool>(std::getline(body, node));
+                    ++line_number;
+                    std::istringstream numbers(node);
+                    long               tag = 0;
+                    double             x = 0, y = 0, z = 0;
+                    std::string        rest;
+                    AssertThrow(
+                      read && (numbers >> tag >> x >> y >> z) &&
+                        !(numbers >> rest),
+                      ExcMessage(
+                        "Line " + std::to_string(line_number) +
+                        " of the mesh file <" + file_name + "> " +
+                        (read ? "is '" + dealii::Utilities::trim(node) + "'" :
+                                std::string("is missing")) +
+                        ", but its $Nodes section announces " +
+                        std::to_string(n) +
+                        " nodes, each a line 'tag x y z' of "
+                        "numbers. The file is damaged: save the "
+                        "mesh again with Gmsh."));
+                  }
+              }
           }
+        AssertThrow(n_nodes_sections == 1 && n_elements_sections == 1,
+                    ExcMessage(
+                      "The mesh file <" + file_name + "> has " +
+                      std::to_string(n_nodes_sections) + " $Nodes and " +
+                      std::to_string(n_elements_sections) +
+                      " $Elements sections after its $MeshFormat header; a "
+                      "Gmsh mesh has one of each (the file is damaged or "
+                      "not a mesh: save it again with Gmsh)."));
       }
 
       // $PhysicalNames: "n" then lines "dimension tag \"name\"".

@@ -141,8 +141,11 @@ namespace rupture
           "the residual no longer falls.");
         prm.declare_entry("Linear solver tolerance",
                           "1e-10",
-                          Patterns::Double(0, 1),
-                          "Relative residual reduction of the Krylov solve.");
+                          Patterns::Double(1e-15, 1),
+                          "Relative residual reduction of the Krylov solve, "
+                          "from 1e-15 (about what double precision can "
+                          "reach: a smaller one would only end in a "
+                          "breakdown of the solver) to 1.");
         prm.declare_entry("Maximum linear iterations",
                           "1000",
                           Patterns::Integer(1),

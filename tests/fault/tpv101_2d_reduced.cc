@@ -55,6 +55,8 @@ main(int argc, char **argv)
                                        "--set",
                                        "Scene/Box/Number of cells=160, 48",
                                        "--set",
+                                       "Discretization/Polynomial degree=1",
+                                       "--set",
                                        "Scene/Box/Lower corner=-20000, -6000",
                                        "--set",
                                        "Scene/Box/Upper corner=20000, 6000",

@@ -111,13 +111,16 @@ main(int argc, char **argv)
                "  set Plane point = 0, 300\n  set Plane normal = 0, 1\nend\n");
   write("fault_penalty.prm", base + fault + "  set Normal penalty = -1\nend\n");
   // Not bad input, but a run that fails: a Krylov solve limited to one
-  // iteration. Its message must reach the screen (ML's smoother once
-  // crashed in the destructor and swallowed it) and the code must be 1.
+  // iteration on 32 x 32 cells, far from the smallest tolerance allowed. Its
+  // message must reach the screen (ML's smoother once crashed in the
+  // destructor and swallowed it) and the code must be 1.
   write("solver_fails.prm",
         base + fault +
           "end\nsubsection Solver\n  set Maximum linear iterations = 1\n"
-          "  set Linear solver tolerance = 1e-30\n"
-          "end\nsubsection Boundary conditions\n  set Traction = top: 1e6; "
+          "  set Linear solver tolerance = 1e-15\n"
+          "end\nsubsection Scene\n  subsection Box\n    set Number of cells "
+          "= 32\n  end\nend\n"
+          "subsection Boundary conditions\n  set Traction = top: 1e6; "
           "-1e7\nend\nset Output directory = failed-run\n");
   write("refined_fault.prm",
         base + fault +
@@ -332,6 +335,28 @@ main(int argc, char **argv)
         {"valid.prm", "--set", "Scene/Box/Upper corner=1e308, 1e308"});
   check("wave speeds above the speed of light",
         {"valid.prm", "--set", "Material/P-wave speed=4e8"});
+  // A Gmsh file whose header is valid and whose body is garbage, or has no
+  // sections at all: named with its line, not by a missing boundary.
+  write("gmsh_garbage_nodes.msh",
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
+        "xx yy\n$EndNodes\n");
+  write("gmsh_no_sections.msh",
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\nsome text that is not a "
+        "section\n");
+  for (const std::string name : {"gmsh_garbage_nodes", "gmsh_no_sections"})
+    {
+      write(name + ".prm", base + gmsh + name + ".msh\n  end\nend\n");
+      check("a Gmsh file with a valid header and a damaged body (" + name + ")",
+            {name + ".prm"});
+    }
+  check("a linear solver tolerance below what double precision reaches",
+        {"valid.prm", "--set", "Solver/Linear solver tolerance=1e-300"});
+  check("fault sides by material ids without <Plus side> = material ids",
+        {"valid.prm",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plus side material ids=1"});
   // The memory of the machine is in the message: only its parts are
   // printed.
   for (const std::string &set : {"Scene/Box/Number of cells=100000, 100000",
