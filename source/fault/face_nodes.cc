@@ -14,21 +14,22 @@ namespace rupture
   {
     namespace FaceNodes
     {
+      std::vector<double>
+      points_1d(const unsigned int degree)
+      {
+        std::vector<double> x;
+        if (degree == 1)
+          return {0., 1.};
+        const QGaussLobatto<1> q(degree + 1);
+        for (unsigned int i = 0; i <= degree; ++i)
+          x.push_back(q.point(i)[0]);
+        return x;
+      }
+
+
+
       namespace
       {
-        /// The Gauss-Lobatto points of degree @p degree on [0, 1].
-        std::vector<double>
-        points_1d(const unsigned int degree)
-        {
-          std::vector<double> x;
-          if (degree == 1)
-            return {0., 1.};
-          const QGaussLobatto<1> q(degree + 1);
-          for (unsigned int i = 0; i <= degree; ++i)
-            x.push_back(q.point(i)[0]);
-          return x;
-        }
-
         /// The Lagrange polynomials through @p nodes, at @p x.
         std::vector<double>
         lagrange(const std::vector<double> &nodes, const double x)

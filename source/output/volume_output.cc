@@ -1,5 +1,6 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
+#include <rupture/fault/face_nodes.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/output/vtu_file.h>
 
@@ -63,27 +64,13 @@ namespace rupture
         std::vector<Point<dim>>                    unit_point;
       };
 
-      /// The Gauss-Lobatto points of degree @p degree on [0, 1].
-      std::vector<double>
-      lobatto_points(const unsigned int degree)
-      {
-        if (degree == 1)
-          return {0., 1.};
-        std::vector<double>    x;
-        const QGaussLobatto<1> q(degree + 1);
-        for (unsigned int i = 0; i <= degree; ++i)
-          x.push_back(q.point(i)[0]);
-        return x;
-      }
-
       template <int dim>
       NodeTable<dim>
       node_table(const FiniteElement<dim> &fe)
       {
         NodeTable<dim> table;
-        table.degree                 = fe.degree;
-        const unsigned int        p  = fe.degree;
-        const std::vector<double> gl = lobatto_points(p);
+        table.degree         = fe.degree;
+        const unsigned int p = fe.degree;
         const unsigned int n = dealii::Utilities::fixed_power<dim>(p + 1);
         table.node_dof.resize(n);
         table.unit_point.resize(n);
@@ -95,13 +82,7 @@ namespace rupture
               fe.base_element(base).get_unit_support_points()[node];
             unsigned int lex = 0;
             for (unsigned int d = dim; d-- > 0;)
-              {
-                unsigned int best = 0;
-                for (unsigned int k = 1; k <= p; ++k)
-                  if (std::abs(gl[k] - x[d]) < std::abs(gl[best] - x[d]))
-                    best = k;
-                lex = lex * (p + 1) + best;
-              }
+              lex = lex * (p + 1) + Fault::FaceNodes::nearest_point(p, x[d]);
             table.node_dof[lex][component % dim] = i;
             table.unit_point[lex]                = x;
           }
@@ -114,7 +95,7 @@ namespace rupture
       Point<dim>
       sub_cell_centre(const unsigned int degree, unsigned int sub)
       {
-        const std::vector<double> gl = lobatto_points(degree);
+        const std::vector<double> gl = Fault::FaceNodes::points_1d(degree);
         Point<dim>                centre;
         for (unsigned int d = 0; d < dim; ++d)
           {

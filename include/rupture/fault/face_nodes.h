@@ -56,6 +56,11 @@ namespace rupture
       std::vector<double>
       weights(const unsigned int degree, const std::array<double, dim - 1> &xi);
 
+      /// The Gauss-Lobatto points of degree @p degree on [0, 1] (the 1-D
+      /// node coordinates of FE_Q of that degree).
+      std::vector<double>
+      points_1d(const unsigned int degree);
+
       /// The index (0..p) of the Gauss-Lobatto point of degree @p degree
       /// nearest to the 1-D coordinate @p xi.
       unsigned int
