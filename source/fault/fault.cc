@@ -311,6 +311,12 @@ namespace rupture
       auto &fault_faces                    = interface.fault_faces;
       owned_faces                          = std::move(interface.owned_faces);
       const unsigned int n_interface_faces = interface.n_interface_faces;
+      region_node_dofs.clear();
+      for (const auto &[key, pair] : fault_nodes)
+        {
+          region_node_dofs.insert(pair.minus[0]);
+          region_node_dofs.insert(pair.plus[0]);
+        }
 
       // Tributary area and normal of each node: the integral of its shape
       // function times the normal over the fault faces, with the vertex

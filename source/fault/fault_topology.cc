@@ -310,6 +310,19 @@ namespace rupture
 
 
 
+    template <int dim>
+    bool
+    Fault<dim>::touches_fault_region(
+      const std::vector<types::global_dof_index> &cell_dofs) const
+    {
+      for (const auto dof : cell_dofs)
+        if (region_node_dofs.count(dof) != 0)
+          return true;
+      return false;
+    }
+
+
+
     template class Fault<2>;
     template class Fault<3>;
   } // namespace Fault

@@ -57,6 +57,14 @@ namespace rupture
       AlignedVector<Number> lambda, mu, density;
       /// The factors of K and M in the product of the next cell loop.
       mutable double stiffness_factor = 1, mass_factor = 0;
+      /// The Kelvin-Voigt zone: 1 in the lanes of its cells, 0 elsewhere,
+      /// and whether a batch has any of them.
+      AlignedVector<Number> zone_mask;
+      std::vector<bool>     batch_in_zone;
+      /// In the next cell loop, if not null: only the product eta K_zone
+      /// of the zone's cells with this vector (vmult_zone()).
+      mutable const VectorType *zone_src = nullptr;
+      mutable double            zone_eta = 0;
 
       /**
        * The quadrature-point operation of stiffness_factor K +
@@ -118,8 +126,18 @@ namespace rupture
         const auto evaluation_flags = flags(stiffness_factor, mass_factor);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
           {
+            // vmult_zone(): eta K_c v on the zone's cells only.
+            if (zone_src && !batch_in_zone[cell])
+              continue;
             phi.reinit(cell);
             phi.read_dof_values(src);
+            if (zone_src)
+              {
+                const Number f = zone_eta * zone_mask[cell];
+                Number      *x = phi.begin_dof_values();
+                for (unsigned int i = 0; i < phi.dofs_per_cell; ++i)
+                  x[i] *= f;
+              }
             phi.evaluate(evaluation_flags);
             quadrature_operation(phi, cell, stiffness_factor, mass_factor);
             phi.integrate(evaluation_flags);
@@ -137,7 +155,8 @@ namespace rupture
       local_diagonals(const MF   &data,
                       VectorType &dst,
                       VectorType &mass_diagonal,
-                      const std::pair<unsigned int, unsigned int> &range) const
+                      const std::pair<unsigned int, unsigned int> &range,
+                      const bool zone = false) const
       {
         const unsigned int side = data.get_cell_active_fe_index(range);
         constexpr int      n_q  = (degree < 0 ? 0 : degree + 1);
@@ -147,8 +166,11 @@ namespace rupture
         AlignedVector<Number> k_diagonal(n), m_diagonal(n);
         for (unsigned int cell = range.first; cell < range.second; ++cell)
           {
+            // (With @p zone: the stiffness diagonal of the zone's cells.)
+            if (zone && !batch_in_zone[cell])
+              continue;
             phi.reinit(cell);
-            for (unsigned int pass = 0; pass < 2; ++pass)
+            for (unsigned int pass = 0; pass < (zone ? 1 : 2); ++pass)
               {
                 const double           k_factor = (pass == 0 ? 1 : 0);
                 const double           m_factor = 1 - k_factor;
@@ -166,8 +188,11 @@ namespace rupture
                   }
               }
             for (unsigned int i = 0; i < n; ++i)
-              phi.begin_dof_values()[i] = k_diagonal[i];
+              phi.begin_dof_values()[i] =
+                zone ? zone_mask[cell] * k_diagonal[i] : k_diagonal[i];
             phi.distribute_local_to_global(dst);
+            if (zone)
+              continue;
             for (unsigned int i = 0; i < n; ++i)
               phi.begin_dof_values()[i] = m_diagonal[i];
             phi.distribute_local_to_global(mass_diagonal);
@@ -254,6 +279,48 @@ namespace rupture
 
     template <int dim>
     void
+    ElasticOperator<dim>::set_zone(
+      const std::function<
+        bool(const typename DoFHandler<dim>::active_cell_iterator &)> &in_zone)
+    {
+      Implementation    &i         = *impl;
+      const unsigned int n_batches = i.matrix_free.n_cell_batches();
+      i.zone_mask.resize(n_batches);
+      i.batch_in_zone.assign(n_batches, false);
+      for (unsigned int b = 0; b < n_batches; ++b)
+        {
+          i.zone_mask[b] = 0.;
+          for (unsigned int v = 0;
+               v < i.matrix_free.n_active_entries_per_cell_batch(b);
+               ++v)
+            if (in_zone(i.matrix_free.get_cell_iterator(b, v)))
+              {
+                i.zone_mask[b][v]  = 1.;
+                i.batch_in_zone[b] = true;
+              }
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::vmult_zone(VectorType       &dst,
+                                     const VectorType &v,
+                                     const double      eta) const
+    {
+      Assert(impl->batch_in_zone.size() == impl->matrix_free.n_cell_batches(),
+             ExcMessage("set_zone() was not called"));
+      impl->zone_src = &v;
+      impl->zone_eta = eta;
+      vmult(dst, v, 1., 0.);
+      impl->zone_src = nullptr;
+    }
+
+
+
+    template <int dim>
+    void
     ElasticOperator<dim>::vmult(VectorType       &dst,
                                 const VectorType &src,
                                 const double      stiffness_factor,
@@ -327,6 +394,46 @@ namespace rupture
       initialize_dof_vector(unused);
       i.matrix_free.cell_loop(local, stiffness_diagonal, unused, true);
       mass_diagonal.compress(VectorOperation::add);
+    }
+
+
+
+    template <int dim>
+    void
+    ElasticOperator<dim>::compute_zone_diagonal(VectorType &diagonal) const
+    {
+      const Implementation &i = *impl;
+      initialize_dof_vector(diagonal);
+      using Range = std::pair<unsigned int, unsigned int>;
+      VectorType unused; // (neither the mass diagonal nor the source)
+      initialize_dof_vector(unused);
+      const std::function<void(const typename Implementation::MF &,
+                               VectorType &,
+                               const VectorType &,
+                               const Range &)>
+        local = [&](const typename Implementation::MF &data,
+                    VectorType                        &dst,
+                    const VectorType &,
+                    const Range &range) {
+          switch (i.fe_degree)
+            {
+              case 1:
+                i.template local_diagonals<1>(data, dst, unused, range, true);
+                break;
+              case 2:
+                i.template local_diagonals<2>(data, dst, unused, range, true);
+                break;
+              case 3:
+                i.template local_diagonals<3>(data, dst, unused, range, true);
+                break;
+              case 4:
+                i.template local_diagonals<4>(data, dst, unused, range, true);
+                break;
+              default:
+                i.template local_diagonals<-1>(data, dst, unused, range, true);
+            }
+        };
+      i.matrix_free.cell_loop(local, diagonal, unused, true);
     }
 
 

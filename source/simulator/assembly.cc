@@ -326,10 +326,11 @@ namespace rupture
     if (scheme == Scheme::explicit_central_difference)
       {
         const double omega = compute_highest_frequency();
-        stable_time_step =
-          TimeIntegration::central_difference_stable_step(omega,
-                                                          rayleigh_alpha,
-                                                          rayleigh_beta);
+        stable_time_step   = TimeIntegration::central_difference_stable_step(
+          omega,
+          rayleigh_alpha,
+          rayleigh_beta,
+          fault_zone ? fault_zone_fraction : 0.);
         pcout << "   Stable explicit time step: " << std::setprecision(6)
               << stable_time_step << " s (highest element frequency " << omega
               << " rad/s)\n";
@@ -375,22 +376,32 @@ namespace rupture
                                                 consistent_mass_diagonal);
         if (absorbing_factor != 0 && has_absorbing)
           system_diagonal.add(absorbing_factor, absorbing_damping);
+        if (absorbing_factor != 0 && fault_zone_viscosity() != 0)
+          fault_zone->add_diagonal(absorbing_factor * fault_zone_viscosity(),
+                                   system_diagonal);
         max_system_diagonal = system_diagonal.linfty_norm();
         return;
       }
     TimerOutput::Scope t(timer, "Assemble system matrix");
     system_matrix        = 0;
     const bool with_mass = (mass_factor != 0 && !use_lumped_mass);
-    for_each_cell_matrix(with_mass,
-                         [&](const std::vector<types::global_dof_index> &dofs,
-                             FullMatrix<double>                         &k,
-                             const FullMatrix<double>                   &mass) {
-                           k *= stiffness_factor;
-                           if (with_mass)
-                             k.add(mass_factor, mass);
-                           increment_constraints.distribute_local_to_global(
-                             k, dofs, system_matrix);
-                         });
+    // The fault zone's Kelvin-Voigt damping adds a1 eta K there.
+    const double zone_factor = absorbing_factor * fault_zone_viscosity();
+    for_each_cell_matrix(
+      with_mass,
+      [&](const auto                                 &cell,
+          const std::vector<types::global_dof_index> &dofs,
+          FullMatrix<double>                         &k,
+          const FullMatrix<double>                   &mass) {
+        k *=
+          stiffness_factor +
+          ((zone_factor != 0 && fault_zone->contains(cell)) ? zone_factor : 0.);
+        if (with_mass)
+          k.add(mass_factor, mass);
+        increment_constraints.distribute_local_to_global(k,
+                                                         dofs,
+                                                         system_matrix);
+      });
     system_matrix.compress(VectorOperation::add);
 
     // Diagonal parts: lumped mass and absorbing dashpots.
@@ -606,10 +617,14 @@ namespace rupture
   template <int dim>
   void
   Simulator<dim>::for_each_cell_matrix(
-    const bool                                             with_mass,
-    const std::function<void(const std::vector<types::global_dof_index> &,
-                             FullMatrix<double> &,
-                             const FullMatrix<double> &)> &action) const
+    const bool with_mass,
+    const std::function<
+      void(const typename DoFHandler<dim>::active_cell_iterator &,
+           const std::vector<types::global_dof_index> &,
+           FullMatrix<double> &,
+           const FullMatrix<double> &)>                        &action,
+    const std::function<bool(
+      const typename DoFHandler<dim>::active_cell_iterator &)> &selected) const
   {
     std::vector<types::global_dof_index> dofs;
     FullMatrix<double>                   k, mass;
@@ -619,7 +634,7 @@ namespace rupture
                                 update_values | update_gradients |
                                   update_JxW_values);
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && (!selected || selected(cell)))
         {
           const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
           hp_values.reinit(cell);
@@ -634,7 +649,7 @@ namespace rupture
                                          materials.get(cell->material_id()),
                                          k,
                                          with_mass ? &mass : nullptr);
-          action(dofs, k, mass);
+          action(cell, dofs, k, mass);
         }
   }
 

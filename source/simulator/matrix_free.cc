@@ -215,6 +215,10 @@ namespace rupture
         for (unsigned int i = 0; i < n; ++i)
           ys[i] += c.absorbing * a[i] * xs[i];
       }
+    if (c.absorbing != 0 && fault_zone_viscosity() != 0)
+      fault_zone->vmult_add(c.absorbing * fault_zone_viscosity(),
+                            system_work,
+                            y);
     if (fault)
       fault->apply_tangent(system_work, y);
     // The identity on constrained rows.

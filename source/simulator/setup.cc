@@ -370,6 +370,7 @@ namespace rupture
          (scheme == Scheme::implicit_newmark &&
           linear_solver.multigrid_in_dynamic_steps())))
       setup_multigrid();
+    setup_fault_zone_damping();
 
     pcout << "   Degrees of freedom: " << dof_handler.n_dofs() << "\n";
     if (fault)

@@ -117,6 +117,8 @@ namespace rupture
         apply_stiffness(v, tmp);
         y.add(rayleigh_beta, tmp);
       }
+    if (fault_zone_viscosity() != 0)
+      fault_zone->vmult_add(fault_zone_viscosity(), v, y);
     if (has_absorbing)
       {
         tmp = v;

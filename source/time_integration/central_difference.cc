@@ -28,7 +28,8 @@ namespace rupture
                             &old_displacement,
                             &stiffness_force,
                             &residual,
-                            &fault_force})
+                            &fault_force,
+                            &zone_force})
         v->reinit(s.locally_owned_dofs, s.communicator);
       dof_kind.assign(s.locally_owned_dofs.n_elements(), DofKind::free);
       unsigned int k = 0;
@@ -76,6 +77,7 @@ namespace rupture
       const double       dt    = s.time_step;
       const double       alpha = s.rayleigh_alpha;
       const double       beta  = s.rayleigh_beta;
+      const double       eta   = s.fault_zone_viscosity();
       const VectorType  &load  = s.current_load(s.time);
       const unsigned int n     = dof_kind.size();
 
@@ -108,8 +110,8 @@ namespace rupture
       s.distribute_hanging(s.displacement);
 
       // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
-      //   - alpha M v~ - C_abs v~ - F_fault; the stiffness damping uses the
-      //   predictor.
+      //   - eta K_zone v~ - alpha M v~ - C_abs v~ - F_fault; the stiffness
+      //   damping uses the predictor.
       // Without stiffness damping K u is read where the matrix-free
       // operator left it (no copy).
       const double *ku =
@@ -129,6 +131,8 @@ namespace rupture
       for (unsigned int i = 0; i < n; ++i)
         r[i] =
           f[i] - ku[i] - alpha * m[i] * v[i] - (c_abs ? c_abs[i] * v[i] : 0.);
+      if (eta != 0)
+        s.fault_zone->vmult_add(-eta, s.velocity, residual);
       // The fault's force, nonzero only at its entries: r - F_fault there.
       if (s.fault)
         {
@@ -164,10 +168,17 @@ namespace rupture
           s.apply_stiffness(s.displacement, stiffness_force);
           ku = local(stiffness_force);
         }
-      const double *const kv      = (beta != 0) ? r : nullptr;
-      double *const       applied = local(s.applied_force);
-      double *const       damping = local(s.damping_force);
-      double *const       absorbing =
+      const double *const kv   = (beta != 0) ? r : nullptr;
+      const double       *zone = nullptr;
+      if (eta != 0)
+        {
+          zone_force = 0;
+          s.fault_zone->vmult_add(eta, s.velocity, zone_force);
+          zone = local(zone_force);
+        }
+      double *const applied = local(s.applied_force);
+      double *const damping = local(s.damping_force);
+      double *const absorbing =
         s.has_absorbing ? local(s.absorbing_force) : nullptr;
       double *const contact = local(s.contact_force);
       // work of the loads, damping, absorbing boundaries, fault; strain and
@@ -180,6 +191,7 @@ namespace rupture
             continue;
           const double increment = u[i] - u0[i];
           const double c = alpha * m[i] * v[i] + (kv ? beta * kv[i] : 0.) +
+                           (zone ? zone[i] : 0.) +
                            (c_abs ? c_abs[i] * v[i] : 0.);
           // Loads on free DoFs, reactions on kinematically held ones.
           const double force = (dof_kind[i] == DofKind::kinematic) ?

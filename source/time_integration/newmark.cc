@@ -194,10 +194,12 @@ namespace rupture
     double
     central_difference_stable_step(const double omega_max,
                                    const double alpha,
-                                   const double beta)
+                                   const double beta,
+                                   const double kelvin_voigt_fraction)
     {
       const double xi = alpha / (2 * omega_max) + beta * omega_max / 2;
-      return 2. / omega_max * (std::sqrt(1 + xi * xi) - xi);
+      const double c  = 1 + 2 * kelvin_voigt_fraction;
+      return 2. / omega_max * (std::sqrt(xi * xi + c) - xi) / c;
     }
   } // namespace TimeIntegration
 } // namespace rupture

@@ -413,6 +413,17 @@ namespace rupture
       n_welded_nodes() const;
 
       /**
+       * Whether a cell with the DoFs @p cell_dofs has a node of the fault
+       * region (a split or penalty node pair, not a welded one) among its
+       * nodes: the cells that touch the fault, also by an edge or a
+       * vertex. Known for the locally owned and ghost cells (from
+       * setup()).
+       */
+      bool
+      touches_fault_region(
+        const std::vector<types::global_dof_index> &cell_dofs) const;
+
+      /**
        * The l2 norm of the nodal forces A T_0 of the initial traction on
        * both sides of every pair (from setup()): a force scale of a
        * prestressed fault at rest, where the residual alone is tiny.
@@ -590,10 +601,13 @@ namespace rupture
       /// Fault faces of locally owned cells, as the keys of their nodes
       /// (lexicographic, see FaceNodes).
       std::vector<std::vector<types::global_dof_index>> owned_faces;
-      double                                            initial_force_scale = 0;
-      unsigned int                                      n_global_split      = 0;
-      unsigned int                                      n_global_welded     = 0;
-      double                                            frictional_energy   = 0;
+      /// The DoFs of component 0 of both sides of every pair of the fault
+      /// region that this rank sees (owned and ghost cells).
+      std::set<types::global_dof_index> region_node_dofs;
+      double                            initial_force_scale = 0;
+      unsigned int                      n_global_split      = 0;
+      unsigned int                      n_global_welded     = 0;
+      double                            frictional_energy   = 0;
     };
   } // namespace Fault
 } // namespace rupture

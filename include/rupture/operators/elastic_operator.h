@@ -9,6 +9,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -79,6 +80,23 @@ namespace rupture
             const VectorType &src,
             const double      stiffness_factor,
             const double      mass_factor) const;
+
+      /**
+       * Mark the cells of a Kelvin-Voigt zone (the cells next to a fault,
+       * see FaultZoneDamping) for the products below.
+       */
+      void
+      set_zone(
+        const std::function<bool(
+          const typename DoFHandler<dim>::active_cell_iterator &)> &in_zone);
+
+      /// dst = eta K_zone v, a pass over the zone's cell batches only.
+      void
+      vmult_zone(VectorType &dst, const VectorType &v, const double eta) const;
+
+      /// The diagonal of K_zone (zero away from the zone).
+      void
+      compute_zone_diagonal(VectorType &diagonal) const;
 
       /**
        * The diagonals of K and of the consistent M, for Jacobi-type

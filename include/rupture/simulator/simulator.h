@@ -7,6 +7,7 @@
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
 #include <rupture/operators/elastic_operator.h>
+#include <rupture/operators/fault_zone_damping.h>
 #include <rupture/operators/multigrid.h>
 #include <rupture/output/directory.h>
 #include <rupture/output/log.h>
@@ -365,6 +366,14 @@ namespace rupture
     /// Set up the matrix-free stiffness operator and its vectors.
     void
     setup_matrix_free_stiffness();
+    /// Mark the cells of <Damping/Fault zone damping> and assemble their
+    /// stiffness (nothing without a fault or with the fraction 0).
+    void
+    setup_fault_zone_damping();
+    /// The Kelvin-Voigt coefficient eta (s) of the fault zone now: the
+    /// fraction times the current time step (0 without the zone).
+    double
+    fault_zone_viscosity() const;
     /// Build the levels of the multigrid preconditioner for the mesh.
     void
     setup_multigrid();
@@ -375,12 +384,19 @@ namespace rupture
     use_multigrid_now() const;
     /// Call @p action with the DoF indices, the stiffness matrix and (if
     /// @p with_mass) the consistent mass matrix of each locally owned cell.
+    /// Cells for which @p selected is false are skipped (none if it is
+    /// empty).
     void
     for_each_cell_matrix(
-      const bool                                             with_mass,
-      const std::function<void(const std::vector<types::global_dof_index> &,
-                               FullMatrix<double> &,
-                               const FullMatrix<double> &)> &action) const;
+      const bool with_mass,
+      const std::function<
+        void(const typename DoFHandler<dim>::active_cell_iterator &,
+             const std::vector<types::global_dof_index> &,
+             FullMatrix<double> &,
+             const FullMatrix<double> &)>                        &action,
+      const std::function<bool(
+        const typename DoFHandler<dim>::active_cell_iterator &)> &selected = {})
+      const;
     void
     compute_damping_force(const VectorType &velocity, VectorType &y) const;
     /// The force of the absorbing boundaries' dashpots alone, at @p velocity.
@@ -459,8 +475,12 @@ namespace rupture
     mutable LinearAlgebra::distributed::Vector<double> operator_dst;
     double                                             rayleigh_alpha;
     double                                             rayleigh_beta;
-    double                                             gravity;
-    double                                             output_interval;
+    /// <Damping/Fault zone damping>: eta / dt of the cells at the fault.
+    double fault_zone_fraction = 0;
+    /// Those cells and their stiffness (null without the zone).
+    std::unique_ptr<Operators::FaultZoneDamping<dim>> fault_zone;
+    double                                            gravity;
+    double                                            output_interval;
     /// Simulated time between fault surface outputs (negative: none).
     double                                          fault_output_interval = -1;
     unsigned int                                    cells_per_output_piece;

@@ -42,6 +42,8 @@ namespace rupture
       /// Work vectors kept between steps: the displacement at the start of
       /// the step, K u, the residual and the fault's forces.
       VectorType old_displacement, stiffness_force, residual, fault_force;
+      /// eta K_zone v at the end of the step (the fault zone's damping).
+      VectorType zone_force;
       /// The owned entries the split-node fault force touches.
       std::vector<unsigned int> fault_entries;
       /// What each locally owned DoF is, for the energy budget.

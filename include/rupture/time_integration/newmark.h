@@ -75,11 +75,17 @@ namespace rupture
      * Rayleigh damping C = alpha M + beta K: dt = 2/omega (sqrt(1 + xi^2) -
      * xi) with the damping ratio xi = alpha/(2 omega) + beta omega/2 of
      * the highest mode.
+     *
+     * With a further stiffness-proportional damping whose coefficient is
+     * the fraction @p kelvin_voigt_fraction c of the step itself (the
+     * fault zone's), xi = xi_0 + c omega dt / 2, and the bound
+     * omega dt / 2 = x solves (1 + 2 c) x^2 + 2 xi_0 x - 1 = 0.
      */
     double
     central_difference_stable_step(const double omega_max,
                                    const double alpha,
-                                   const double beta);
+                                   const double beta,
+                                   const double kelvin_voigt_fraction = 0);
   } // namespace TimeIntegration
 } // namespace rupture
 
