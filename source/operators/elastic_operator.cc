@@ -65,6 +65,8 @@ namespace rupture
       /// of the zone's cells with this vector (vmult_zone()).
       mutable const VectorType *zone_src = nullptr;
       mutable double            zone_eta = 0;
+      /// Whether the next cell loop zeroes dst first (not in vmult_zone()).
+      mutable bool zero_dst = true;
 
       /**
        * The quadrature-point operation of stiffness_factor K +
@@ -313,8 +315,10 @@ namespace rupture
              ExcMessage("set_zone() was not called"));
       impl->zone_src = &v;
       impl->zone_eta = eta;
+      impl->zero_dst = false;
       vmult(dst, v, 1., 0.);
       impl->zone_src = nullptr;
+      impl->zero_dst = true;
     }
 
 
@@ -332,24 +336,39 @@ namespace rupture
       switch (i.fe_degree)
         {
           case 1:
-            i.matrix_free.cell_loop(
-              &Implementation::template local_apply<1>, &i, dst, src, true);
+            i.matrix_free.cell_loop(&Implementation::template local_apply<1>,
+                                    &i,
+                                    dst,
+                                    src,
+                                    i.zero_dst);
             break;
           case 2:
-            i.matrix_free.cell_loop(
-              &Implementation::template local_apply<2>, &i, dst, src, true);
+            i.matrix_free.cell_loop(&Implementation::template local_apply<2>,
+                                    &i,
+                                    dst,
+                                    src,
+                                    i.zero_dst);
             break;
           case 3:
-            i.matrix_free.cell_loop(
-              &Implementation::template local_apply<3>, &i, dst, src, true);
+            i.matrix_free.cell_loop(&Implementation::template local_apply<3>,
+                                    &i,
+                                    dst,
+                                    src,
+                                    i.zero_dst);
             break;
           case 4:
-            i.matrix_free.cell_loop(
-              &Implementation::template local_apply<4>, &i, dst, src, true);
+            i.matrix_free.cell_loop(&Implementation::template local_apply<4>,
+                                    &i,
+                                    dst,
+                                    src,
+                                    i.zero_dst);
             break;
           default:
-            i.matrix_free.cell_loop(
-              &Implementation::template local_apply<-1>, &i, dst, src, true);
+            i.matrix_free.cell_loop(&Implementation::template local_apply<-1>,
+                                    &i,
+                                    dst,
+                                    src,
+                                    i.zero_dst);
         }
     }
 

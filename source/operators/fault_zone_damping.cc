@@ -54,6 +54,20 @@ namespace rupture
           elastic->initialize_dof_vector(source);
           elastic->initialize_dof_vector(result);
           zone_stiffness.clear();
+          // The entries the product touches: the support of K_zone r for
+          // values r without a pattern (C^T K C is symmetric, so the
+          // entries it writes are those it reads).
+          for (unsigned int i = 0; i < source.locally_owned_size(); ++i)
+            source.local_element(i) =
+              1. + ((owned_dofs.nth_index_in_set(i) * 7919) % 1009) / 1009.;
+          elastic->vmult_zone(result, source, 1.);
+          zone_entries.clear();
+          for (unsigned int i = 0; i < result.locally_owned_size(); ++i)
+            if (result.local_element(i) != 0)
+              {
+                zone_entries.push_back(i);
+                result.local_element(i) = 0;
+              }
           return;
         }
       SparsityTools::distribute_sparsity_pattern(dsp,
@@ -106,14 +120,18 @@ namespace rupture
           return;
         }
       // Both vectors number their owned entries in increasing global
-      // order, so the owned parts copy one to one.
-      const unsigned int n  = source.locally_owned_size();
-      const double      *xs = x.trilinos_vector()[0];
-      std::copy(xs, xs + n, source.begin());
+      // order, so the owned parts copy one to one; only the zone's entries
+      // are read and written (result is zero elsewhere, and is left so).
+      const double *xs = x.trilinos_vector()[0];
+      for (const unsigned int i : zone_entries)
+        source.local_element(i) = xs[i];
       elastic->vmult_zone(result, source, factor);
       double *ys = y.trilinos_vector()[0];
-      for (unsigned int i = 0; i < n; ++i)
-        ys[i] += result.local_element(i);
+      for (const unsigned int i : zone_entries)
+        {
+          ys[i] += result.local_element(i);
+          result.local_element(i) = 0;
+        }
     }
 
 
@@ -129,9 +147,10 @@ namespace rupture
                           product.get_mpi_communicator());
           if (elastic)
             {
-              elastic->compute_zone_diagonal(result);
-              std::copy(result.begin(),
-                        result.begin() + result.locally_owned_size(),
+              LinearAlgebra::distributed::Vector<double> k;
+              elastic->compute_zone_diagonal(k);
+              std::copy(k.begin(),
+                        k.begin() + k.locally_owned_size(),
                         diagonal.trilinos_vector()[0]);
             }
           else

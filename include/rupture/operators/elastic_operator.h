@@ -90,7 +90,8 @@ namespace rupture
         const std::function<bool(
           const typename DoFHandler<dim>::active_cell_iterator &)> &in_zone);
 
-      /// dst = eta K_zone v, a pass over the zone's cell batches only.
+      /// dst += eta K_zone v, a pass over the zone's cell batches only
+      /// (dst's ghost entries must be zero, as compress() leaves them).
       void
       vmult_zone(VectorType &dst, const VectorType &v, const double eta) const;
 

@@ -88,6 +88,10 @@ namespace rupture
       mutable VectorType                                 diagonal;
       mutable VectorType                                 product;
       mutable LinearAlgebra::distributed::Vector<double> source, result;
+      /// The owned entries (local numbers) that the zone's product reads
+      /// and writes (matrix-free): the DoFs of the zone's cells and the
+      /// masters of their constrained ones. Only these are copied.
+      std::vector<unsigned int> zone_entries;
     };
   } // namespace Operators
 } // namespace rupture
