@@ -5,6 +5,7 @@
 
 #include <rupture/simulator/run.h>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -70,6 +71,20 @@ namespace tests
           rows.push_back(row);
       }
     return rows;
+  }
+
+  /**
+   * The rupture time of a fault station's table (as read_statistics()
+   * gives it): the first time (column 0) at which the along-strike slip
+   * rate (column 2) exceeds 1 mm/s; -1 if it never does.
+   */
+  inline double
+  rupture_time(const std::vector<std::vector<double>> &rows)
+  {
+    for (const auto &row : rows)
+      if (row.size() > 2 && std::abs(row[2]) > 1e-3)
+        return row[0];
+    return -1;
   }
 
   /**

@@ -1,10 +1,7 @@
 """Tests of rupturetools.bench2d and of contrib/degree-study's mesh sizing,
 on station files made here."""
 
-import importlib.machinery
-import importlib.util
 import math
-import os
 
 from rupturetools import bench2d
 
@@ -48,17 +45,8 @@ def test_errors_absolute_in_time_relative_otherwise():
     assert math.isinf(bench2d.errors(mine, ref, stations=[0, 45])["rupture"])
 
 
-def load_degree_study():
-    path = os.path.join(os.path.dirname(__file__), "..", "degree-study")
-    loader = importlib.machinery.SourceFileLoader("degree_study", path)
-    spec = importlib.util.spec_from_loader("degree_study", loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
-
-
-def test_degree_study_mesh_puts_every_station_on_a_node():
-    study = load_degree_study()
+def test_degree_study_mesh_puts_every_station_on_a_node(script):
+    study = script("degree-study")
     for p in (1, 2, 3, 4):
         nodes = [0.0, 1.0] if p % 2 else [0.0, 0.5, 1.0]
         for spacing in (200, 100, 50, 25):

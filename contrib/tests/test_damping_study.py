@@ -1,24 +1,11 @@
 """Tests of contrib/damping-study's case parsing, the 2-D mesh it sets and
 its reading of station files."""
 
-import importlib.machinery
-import importlib.util
-import os
-
 import pytest
 
 
-def load_damping_study():
-    path = os.path.join(os.path.dirname(__file__), "..", "damping-study")
-    loader = importlib.machinery.SourceFileLoader("damping_study", path)
-    spec = importlib.util.spec_from_loader("damping_study", loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
-    return module
-
-
-def test_cases_parse_and_check_the_core():
-    study = load_damping_study()
+def test_cases_parse_and_check_the_core(script):
+    study = script("damping-study")
     assert study.parse_cases("1:750,3:1500") == [(1, 750.0), (3, 1500.0)]
     with pytest.raises(SystemExit):
         study.parse_cases("1-750")
@@ -31,8 +18,8 @@ def test_cases_parse_and_check_the_core():
     assert study.parse_cases("3:100", check=False) == [(3, 100.0)]
 
 
-def test_sets_name_the_damping_and_the_mesh():
-    study = load_damping_study()
+def test_sets_name_the_damping_and_the_mesh(script):
+    study = script("damping-study")
     sets = study.sets(2, 750.0, 0.1)
     assert "Damping/Fault zone damping=0.1" in sets
     assert "Scene/Box/Number of cells=48, 4, 28" in sets
@@ -45,8 +32,8 @@ def test_sets_name_the_damping_and_the_mesh():
     assert study.directory("/w", 1, 500.0, 0.1) == "/w/tpv3/q1-500-eta0.1"
 
 
-def test_read_columns_takes_time_and_along_strike_rate(tmp_path):
-    study = load_damping_study()
+def test_read_columns_takes_time_and_along_strike_rate(tmp_path, script):
+    study = script("damping-study")
     path = tmp_path / "reference-p1.dat"
     path.write_text("# problem=TPV3\n# x = 1\nt h-slip h-slip-rate h-shear-stress\n"
                     "0 0 0 70\n0.5 0.1 1.5 60\n1 0.4 0.5 63\n")

@@ -201,6 +201,45 @@ namespace rupture
           }
       }
 
+      /**
+       * The cell loop of local_diagonals() at the operator's degree: the
+       * diagonal of K into @p stiffness (compressed) and of M into
+       * @p mass (not compressed), or with @p zone the zone's stiffness
+       * diagonal alone.
+       */
+      void
+      diagonals(VectorType &stiffness, VectorType &mass, const bool zone) const
+      {
+        using Range = std::pair<unsigned int, unsigned int>;
+        const std::function<
+          void(const MF &, VectorType &, const VectorType &, const Range &)>
+          local = [&](const MF   &data,
+                      VectorType &dst,
+                      const VectorType &,
+                      const Range &range) {
+            switch (fe_degree)
+              {
+                case 1:
+                  local_diagonals<1>(data, dst, mass, range, zone);
+                  break;
+                case 2:
+                  local_diagonals<2>(data, dst, mass, range, zone);
+                  break;
+                case 3:
+                  local_diagonals<3>(data, dst, mass, range, zone);
+                  break;
+                case 4:
+                  local_diagonals<4>(data, dst, mass, range, zone);
+                  break;
+                default:
+                  local_diagonals<-1>(data, dst, mass, range, zone);
+              }
+          };
+        VectorType unused; // (the loop's source vector, not read)
+        matrix_free.initialize_dof_vector(unused);
+        matrix_free.cell_loop(local, stiffness, unused, true);
+      }
+
       static Number
       trace_of(const SymmetricTensor<2, dim, Number> &t)
       {
@@ -379,39 +418,9 @@ namespace rupture
     ElasticOperator<dim>::compute_diagonals(VectorType &stiffness_diagonal,
                                             VectorType &mass_diagonal) const
     {
-      const Implementation &i = *impl;
       initialize_dof_vector(stiffness_diagonal);
       initialize_dof_vector(mass_diagonal);
-      using Range = std::pair<unsigned int, unsigned int>;
-      const std::function<void(const typename Implementation::MF &,
-                               VectorType &,
-                               const VectorType &,
-                               const Range &)>
-        local = [&](const typename Implementation::MF &data,
-                    VectorType                        &dst,
-                    const VectorType &,
-                    const Range &range) {
-          switch (i.fe_degree)
-            {
-              case 1:
-                i.template local_diagonals<1>(data, dst, mass_diagonal, range);
-                break;
-              case 2:
-                i.template local_diagonals<2>(data, dst, mass_diagonal, range);
-                break;
-              case 3:
-                i.template local_diagonals<3>(data, dst, mass_diagonal, range);
-                break;
-              case 4:
-                i.template local_diagonals<4>(data, dst, mass_diagonal, range);
-                break;
-              default:
-                i.template local_diagonals<-1>(data, dst, mass_diagonal, range);
-            }
-        };
-      VectorType unused; // (the loop's source vector, not read)
-      initialize_dof_vector(unused);
-      i.matrix_free.cell_loop(local, stiffness_diagonal, unused, true);
+      impl->diagonals(stiffness_diagonal, mass_diagonal, false);
       mass_diagonal.compress(VectorOperation::add);
     }
 
@@ -421,38 +430,10 @@ namespace rupture
     void
     ElasticOperator<dim>::compute_zone_diagonal(VectorType &diagonal) const
     {
-      const Implementation &i = *impl;
       initialize_dof_vector(diagonal);
-      using Range = std::pair<unsigned int, unsigned int>;
-      VectorType unused; // (neither the mass diagonal nor the source)
+      VectorType unused; // (no mass diagonal)
       initialize_dof_vector(unused);
-      const std::function<void(const typename Implementation::MF &,
-                               VectorType &,
-                               const VectorType &,
-                               const Range &)>
-        local = [&](const typename Implementation::MF &data,
-                    VectorType                        &dst,
-                    const VectorType &,
-                    const Range &range) {
-          switch (i.fe_degree)
-            {
-              case 1:
-                i.template local_diagonals<1>(data, dst, unused, range, true);
-                break;
-              case 2:
-                i.template local_diagonals<2>(data, dst, unused, range, true);
-                break;
-              case 3:
-                i.template local_diagonals<3>(data, dst, unused, range, true);
-                break;
-              case 4:
-                i.template local_diagonals<4>(data, dst, unused, range, true);
-                break;
-              default:
-                i.template local_diagonals<-1>(data, dst, unused, range, true);
-            }
-        };
-      i.matrix_free.cell_loop(local, diagonal, unused, true);
+      impl->diagonals(diagonal, unused, true);
     }
 
 

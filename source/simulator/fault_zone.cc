@@ -10,6 +10,9 @@ namespace rupture
   Simulator<dim>::setup_fault_zone_damping()
   {
     fault_zone.reset();
+    if (fault_zone_fraction != 0 && !fault)
+      pcout << "   Fault zone damping: the scene has no fault, so there is "
+               "nothing to damp\n";
     if (!fault || fault_zone_fraction == 0)
       return;
     TimerOutput::Scope t(timer, "Fault zone set-up");

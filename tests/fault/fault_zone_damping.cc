@@ -33,15 +33,6 @@
 
 namespace
 {
-  double
-  rupture_time(const std::vector<std::vector<double>> &rows)
-  {
-    for (const auto &row : rows)
-      if (row.size() > 2 && std::abs(row[2]) > 1e-3)
-        return row[0];
-    return -1;
-  }
-
   /// The slip rate's oscillation: its total variation beyond that of one
   /// rise to the peak and one fall to the last value, over the peak (0 for
   /// a history that rises and falls once; each further swing of amplitude
@@ -131,7 +122,7 @@ main(int argc, char **argv)
       if (damped)
         zone_cells =
           tests::find_number(dir + "/log.txt", "Fault zone damping:");
-      rupture[damped]    = rupture_time(rows);
+      rupture[damped]    = tests::rupture_time(rows);
       slip[damped]       = rows.empty() ? -1 : rows.back()[1];
       rough[damped]      = oscillation(rows);
       dissipated[damped] = last_statistic(dir, "Energy dissipated");

@@ -32,15 +32,6 @@
 namespace
 {
   double
-  rupture_time(const std::vector<std::vector<double>> &rows)
-  {
-    for (const auto &row : rows)
-      if (row.size() > 2 && std::abs(row[2]) > 1e-3)
-        return row[0];
-    return -1;
-  }
-
-  double
   final_value(const std::vector<std::vector<double>> &rows,
               const unsigned int                      column)
   {
@@ -95,9 +86,9 @@ main(int argc, char **argv)
       const auto   s2 = tests::read_statistics(dir + "/faultst-045.dat");
       const double step =
         tests::find_number(dir + "/log.txt", "Stable explicit time step:");
-      const std::vector<double> r = {rupture_time(s0),
-                                     rupture_time(s1),
-                                     rupture_time(s2),
+      const std::vector<double> r = {tests::rupture_time(s0),
+                                     tests::rupture_time(s1),
+                                     tests::rupture_time(s2),
                                      final_value(s1, 1)};
       if (p == 1)
         first = r, first_step = step;
@@ -153,7 +144,8 @@ main(int argc, char **argv)
       if (!root)
         continue;
       const auto rows             = tests::read_statistics(dir + "/center.dat");
-      const std::vector<double> r = {rupture_time(rows), final_value(rows, 1)};
+      const std::vector<double> r = {tests::rupture_time(rows),
+                                     final_value(rows, 1)};
       if (p == 1)
         first = r;
       agree = agree && r[0] >= 0 && std::abs(r[0] - first[0]) <= 0.15 &&

@@ -27,20 +27,6 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-  // First time the horizontal slip rate (column 2) exceeds 1 mm/s; -1 if
-  // never.
-  double
-  rupture_time(const std::vector<std::vector<double>> &rows)
-  {
-    for (const auto &row : rows)
-      if (row.size() > 2 && std::abs(row[2]) > 1e-3)
-        return row[0];
-    return -1;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -69,7 +55,7 @@ main(int argc, char **argv)
     {
       const auto rows =
         tests::read_statistics("tpv205/faultst" + name + ".dat");
-      t[name] = rupture_time(rows);
+      t[name] = tests::rupture_time(rows);
       std::printf("station %s: %zu rows\n", name.c_str(), rows.size());
     }
   const bool inner = t["000"] >= 0 && t["045"] >= 0 && t["-045"] >= 0 &&

@@ -351,6 +351,10 @@ main(int argc, char **argv)
     }
   check("a linear solver tolerance below what double precision reaches",
         {"valid.prm", "--set", "Solver/Linear solver tolerance=1e-300"});
+  check("a fault zone damping that is not finite",
+        {"valid.prm", "--set", "Damping/Fault zone damping=nan"});
+  check("a fault zone damping above ten time steps",
+        {"valid.prm", "--set", "Damping/Fault zone damping=11"});
   check("fault sides by material ids without <Plus side> = material ids",
         {"valid.prm",
          "--set",
