@@ -12,13 +12,40 @@ from . import files
 STATIONS = [0, 15, 30, 45, 60, 75, 90, 120, 150]
 
 
+def one_side_each(stations=STATIONS):
+    """The stations of @p stations on each side on its own: "0", "+45",
+    "-45", ... (for a problem that is not symmetric about x = 0)."""
+    return [str(s) if s == 0 else sign + str(s) for s in stations for sign in "+-"
+            if s != 0 or sign == "+"]
+
+
+def station_label(station):
+    """A station's position along strike in km: an int station is the
+    mean of both sides ("4.5"), a signed str one side ("+4.5", "-4.5")."""
+    if isinstance(station, str):
+        value = int(station) / 10
+        return "%g" % value if value == 0 or station[0] not in "+-" else "%+g" % value
+    return "%g" % (station / 10)
+
+
+def station_files(station):
+    """The station files of @p station: an int is both sides (faultst045
+    and faultst-045; 0 only one), a str with a sign one side."""
+    if isinstance(station, str):
+        s = int(station)
+        return ["faultst%03d" % s if s >= 0 else "faultst-%03d" % -s]
+    return ["faultst%03d" % station] + (["faultst-%03d" % station] if station else [])
+
+
 def station_values(out, stations=STATIONS):
     """Rupture time, peak slip rate and final slip at each station of the
-    run in directory @p out: {station: {"rupture", "peak", "slip"}}, the mean
-    of +x and -x (None where a station does not rupture)."""
+    run in directory @p out: {station: {"rupture", "peak", "slip"}}, for an
+    int station the mean of +x and -x, for a signed str station ("+45",
+    "-45", from one_side_each) that side alone (None where a station does
+    not rupture)."""
     values = {}
     for s in stations:
-        names = ["faultst%03d" % s] + (["faultst-%03d" % s] if s else [])
+        names = station_files(s)
         ms = [files.station_metrics(files.read_station(
             os.path.join(out, n + ".dat")).rows) for n in names]
         v = {}

@@ -60,3 +60,19 @@ def test_degree_study_mesh_puts_every_station_on_a_node(script):
                 assert min(abs(xi - n) for n in nodes) < 1e-9, (p, spacing, station)
     assert study.mesh(4, 100) == (160, 80, 30000, 15000)
     assert study.cell_size(2, 100) == 200 and study.cell_size(3, 100) == 300
+
+
+def test_one_side_each_keeps_the_sides_apart(tmp_path):
+    assert bench2d.one_side_each([0, 45]) == ["0", "+45", "-45"]
+    assert [bench2d.station_label(s) for s in ("0", "+45", "-45", 45)] == \
+        ["0", "+4.5", "-4.5", "4.5"]
+    write_station(tmp_path, "faultst000", 0.5, 2.0, 1.0)
+    write_station(tmp_path, "faultst045", 2.0, 4.0, 2.0)
+    write_station(tmp_path, "faultst-045", 2.2, 2.0, 1.0)
+    v = bench2d.station_values(str(tmp_path), stations=bench2d.one_side_each([0, 45]))
+    assert abs(v["+45"]["rupture"] - 2.0) < 0.011
+    assert abs(v["-45"]["rupture"] - 2.2) < 0.011
+    assert abs(v["-45"]["peak"] - 2.0) < 1e-12
+    ref = {"0": v["0"], "+45": v["+45"], "-45": dict(v["-45"], slip=2.0)}
+    e = bench2d.errors(v, ref, stations=["0", "+45", "-45"])
+    assert abs(e["slip"] - 0.5) < 1e-9 and e["rupture"] == 0.0

@@ -94,6 +94,8 @@ main(int argc, char **argv)
                  "--set",
                  "Test mode=true",
                  "--set",
+                 "Discretization/Polynomial degree=1",
+                 "--set",
                  "Output directory=" + dir,
                  "--set",
                  "Output/Output interval=-1",

@@ -60,6 +60,8 @@ main(int argc, char **argv)
                  "--set",
                  "Test mode=true",
                  "--set",
+                 "Damping/Fault zone damping=0",
+                 "--set",
                  "Output directory=" + dir,
                  "--set",
                  "Output/Output interval=-1",

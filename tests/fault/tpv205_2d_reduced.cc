@@ -1,4 +1,5 @@
-// A reduced TPV205-2D (prm/tpv205-2d/tpv205-2d.prm with 500 m cells
+// A reduced TPV205-2D (prm/tpv205-2d/tpv205-2d.prm at degree 1 without
+// damping, with 500 m cells
 // instead of 100 m, to t = 6 s instead of 12 s): the explicit split-node
 // method in 2-D through the benchmark's outputs, on one rank and on two.
 // The run writes the seven on-fault stations in the SCEC format and the
@@ -37,6 +38,10 @@ main(int argc, char **argv)
   const int         code = tests::run({top + "prm/tpv205-2d/tpv205-2d.prm",
                                        "--set",
                                        "Test mode=true",
+                                       "--set",
+                                       "Discretization/Polynomial degree=1",
+                                       "--set",
+                                       "Damping/Fault zone damping=0",
                                        "--set",
                                        "Output directory=tpv205",
                                        "--set",

@@ -292,7 +292,9 @@ main(int argc, char **argv)
   const std::vector<Base>        bases  = {
             {"tpv205-2d",
              "tpv205-2d/tpv205-2d.prm",
-             {"Scene/Box/Number of cells=12, 6",
+             {"Discretization/Polynomial degree=1",
+              "Damping/Fault zone damping=0",
+              "Scene/Box/Number of cells=12, 6",
               "Time integration/End time=0.8",
               "Output/Output interval=0.2"}},
             {"tpv101-2d",

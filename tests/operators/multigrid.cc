@@ -6,7 +6,9 @@
 // refined 1 to 4 times in 2-D, 1 to 2 times in 3-D), for the quasi-static
 // operator K and for the mass-dominated one of an implicit dynamic step, on 1
 // and 2 ranks. Block Jacobi alone needs iterations in proportion to the cells
-// across the model.
+// across the model. The same at degrees 2 to 4 (2-D) and 2 (3-D; degree 3
+// on one mesh only, to keep the test short): the levels keep the degree and
+// coarsen in h.
 
 #include <rupture/material/elastic_material.h>
 #include <rupture/operators/elastic_operator.h>
@@ -50,7 +52,8 @@ namespace
   check(const unsigned int                         refinements,
         const double                               mass_factor,
         const rupture::Material::ElasticMaterials &materials,
-        ConditionalOStream                        &out)
+        ConditionalOStream                        &out,
+        const unsigned int                         degree = 1)
   {
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> tria(comm);
@@ -63,7 +66,7 @@ namespace
       cell->set_material_id(cell->center()[1] > 0.5 ? 1 : 0);
     tria.refine_global(refinements);
 
-    hp::FECollection<dim> fe(FESystem<dim>(FE_Q<dim>(1), dim));
+    hp::FECollection<dim> fe(FESystem<dim>(FE_Q<dim>(degree), dim));
     DoFHandler<dim>       dof_handler(tria);
     dof_handler.distribute_dofs(fe);
     IndexSet relevant;
@@ -72,7 +75,7 @@ namespace
     constraints.close();
 
     rupture::Operators::ElasticOperator<dim> op;
-    op.reinit(MappingQ1<dim>(), dof_handler, constraints, materials, 1);
+    op.reinit(MappingQ1<dim>(), dof_handler, constraints, materials, degree);
 
     typename rupture::Operators::Multigrid<dim>::Description description;
     description.triangulation = &tria;
@@ -80,7 +83,7 @@ namespace
     description.constraints   = &constraints;
     description.fine_operator = &op;
     description.fe_collection = &fe;
-    description.fe_degree     = 1;
+    description.fe_degree     = degree;
     description.materials     = &materials;
     std::array<bool, dim> all;
     all.fill(true);
@@ -127,6 +130,8 @@ namespace
     VectorType r(b), ax(b);
     a.vmult(ax, x);
     r -= ax;
+    if (degree > 1)
+      out << "Q" << degree << ", ";
     out << dim << "-D, " << refinements << " refinements, "
         << (mass_factor == 0 ? "K" : "K + a0 M") << ": " << dof_handler.n_dofs()
         << " DoFs, " << multigrid.n_levels() << " levels, "
@@ -164,4 +169,17 @@ main(int argc, char **argv)
     check<2>(r, 4. / (dt * dt), materials, out);
   for (unsigned int r = 1; r <= 2; ++r)
     check<3>(r, 0., materials, out);
+
+  // Degrees 2 to 4: the levels keep the degree (coarsening in h only), so
+  // the iterations must stay bounded as the mesh is refined at each degree.
+  for (unsigned int p = 2; p <= 4; ++p)
+    {
+      for (unsigned int r = 1; r <= 3; ++r)
+        check<2>(r, 0., materials, out, p);
+      for (unsigned int r = 1; r <= 3; ++r)
+        check<2>(r, 4. / (dt * dt), materials, out, p);
+    }
+  for (unsigned int r = 1; r <= 2; ++r)
+    check<3>(r, 0., materials, out, 2);
+  check<3>(1, 0., materials, out, 3);
 }

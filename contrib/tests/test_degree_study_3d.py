@@ -1,0 +1,66 @@
+"""Tests of contrib/degree-study-3d: its cases put every SCEC station of
+prm/tpv101 on a node, it refuses cases it cannot run, and it measures
+errors against a reference run on station files made here."""
+
+import math
+
+import pytest
+
+HEADER = "# problem=TPV101\nt h-slip h-slip-rate h-shear-stress\n"
+
+
+def write_station(directory, name, start, peak, slip):
+    rows = []
+    t = 0.0
+    while t < 10:
+        rate = peak if start <= t < start + slip / peak else 0.0
+        done = min(max(t - start, 0.0) * peak, slip)
+        rows.append("%g %g %g 70" % (t, done, rate))
+        t += 0.01
+    (directory / (name + ".dat")).write_text(HEADER + "\n".join(rows) + "\n")
+
+
+def test_default_cases_put_stations_on_nodes(script):
+    study = script("degree-study-3d")
+    core_lower = (-18000.0, -1500.0, -10500.0)
+    stations_x = (0.0, 9000.0, -9000.0, 12000.0, -12000.0)
+    stations_z = (0.0, 4500.0, -4500.0)
+    for p, h in study.parse_cases("1:250,2:500,3:750,4:1000"):
+        assert h / p == 250
+        nodes = [0.0, 1.0] if p % 2 else [0.0, 0.5, 1.0]
+        for lower, coords in ((core_lower[0], stations_x), (core_lower[2], stations_z)):
+            for c in coords:
+                xi = (c - lower) / h - math.floor((c - lower) / h)
+                assert min(abs(xi - n) for n in nodes) < 1e-9, (p, h, c)
+        sets = study.case_sets(p, h, 0.3)
+        assert "Discretization/Polynomial degree=%d" % p in sets
+        assert "Damping/Fault zone damping=0.3" in sets
+
+
+def test_bad_cases_are_refused(script):
+    study = script("degree-study-3d")
+    for text in ("2-500", "5:500", "1:400"):
+        with pytest.raises(SystemExit):
+            study.parse_cases(text)
+
+
+def test_errors_against_a_reference_run(script, tmp_path):
+    study = script("degree-study-3d")
+    ref, run = tmp_path / "ref", tmp_path / "run"
+    ref.mkdir()
+    run.mkdir()
+    write_station(ref, "faultst000dp075", 0.5, 2.0, 4.0)
+    write_station(ref, "faultst090dp075", 4.0, 5.0, 2.0)
+    write_station(run, "faultst000dp075", 0.5, 2.0, 4.0)
+    write_station(run, "faultst090dp075", 4.2, 4.0, 2.2)
+    names = ["faultst000dp075", "faultst090dp075"]
+    reference = study.station_values(str(ref), names)
+    values = study.station_values(str(run), names)
+    e = study.bench2d.errors(values, reference, names)
+    assert abs(e["rupture"] - 0.2) < 0.011
+    assert abs(e["peak"] - 0.2) < 1e-12
+    assert abs(e["slip"] - 0.1) < 1e-6
+    row = {"degree": 2, "h": 500.0, "fraction": 0.3, "dofs": 10, "steps": 5,
+           "wall": 12.0, "stations": values, "errors": e}
+    text = study.markdown([row], "test")
+    assert "| 2 | 500 | 250 | 0.3 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
