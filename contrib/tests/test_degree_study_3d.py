@@ -64,3 +64,13 @@ def test_errors_against_a_reference_run(script, tmp_path):
            "wall": 12.0, "stations": values, "errors": e}
     text = study.markdown([row], "test")
     assert "| 2 | 500 | 250 | 0.3 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
+
+
+def test_only_finished_with_nothing_finished_says_so(script, tmp_path, monkeypatch):
+    study = script("degree-study-3d")
+    monkeypatch.setattr(study.sys, "argv", ["degree-study-3d", "--only-finished",
+                                            "--work-dir", str(tmp_path),
+                                            "--output-dir", str(tmp_path)])
+    with pytest.raises(SystemExit) as e:
+        study.main()
+    assert "none of the cases has finished" in str(e.value)
