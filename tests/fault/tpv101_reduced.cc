@@ -1,4 +1,5 @@
-// A reduced 3-D TPV101 (prm/tpv101/tpv101.prm, regularised rate-and-state
+// A reduced 3-D TPV101 (prm/tpv101/tpv101.prm at degree 1, regularised
+// rate-and-state
 // friction with the aging law, the velocity-strengthening border, the
 // initial slip velocity of 1e-12 m/s and the smooth nucleation pulse) on
 // 1500 m cells instead of 100 m, in a box of 48 km x 12 km x 33 km around
@@ -35,6 +36,8 @@ main(int argc, char **argv)
   const std::vector<std::string> coarse = {
     "--set",
     "Test mode=true",
+    "--set",
+    "Discretization/Polynomial degree=1",
     "--set",
     "Output/Output interval=-1",
     "--set",
