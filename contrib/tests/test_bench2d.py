@@ -5,20 +5,7 @@ import math
 
 from rupturetools import bench2d
 
-HEADER = "# problem=TPV101-2D\nt h-slip h-slip-rate h-shear-stress\n"
-
-
-def write_station(directory, name, start, peak, slip):
-    """A station that starts slipping at @p start at rate @p peak for as long
-    as it takes to slip @p slip."""
-    rows = []
-    t = 0.0
-    while t < 10:
-        rate = peak if start <= t < start + slip / peak else 0.0
-        done = min(max(t - start, 0.0) * peak, slip)
-        rows.append("%g %g %g 70" % (t, done, rate))
-        t += 0.01
-    (directory / (name + ".dat")).write_text(HEADER + "\n".join(rows) + "\n")
+from stations import write_station
 
 
 def test_station_values_average_both_sides(tmp_path):

@@ -6,18 +6,7 @@ import math
 
 import pytest
 
-HEADER = "# problem=TPV101\nt h-slip h-slip-rate h-shear-stress\n"
-
-
-def write_station(directory, name, start, peak, slip):
-    rows = []
-    t = 0.0
-    while t < 10:
-        rate = peak if start <= t < start + slip / peak else 0.0
-        done = min(max(t - start, 0.0) * peak, slip)
-        rows.append("%g %g %g 70" % (t, done, rate))
-        t += 0.01
-    (directory / (name + ".dat")).write_text(HEADER + "\n".join(rows) + "\n")
+from stations import write_station
 
 
 def test_default_cases_put_stations_on_nodes(script):
