@@ -1,0 +1,32 @@
+"""The cases P:H (degree, cell size) of the studies on the 3-D graded box
+of prm/tpv3, prm/tpv101 and prm/tpv103."""
+
+import sys
+
+# The uniform core of the graded box (m).
+GRADED_CORE = (36000.0, 3000.0, 21000.0)
+
+
+def parse(text, core=GRADED_CORE):
+    """[(degree, cell size)] from 'P:H,P:H'; exits naming what is wrong: not
+    P:H, a degree outside 1..4, or (unless @p core is None) a cell size that
+    does not divide the core."""
+    cases = []
+    for item in text.split(","):
+        try:
+            p, h = item.split(":")
+            cases.append((int(p), float(h)))
+        except ValueError:
+            sys.exit("--cases: '%s' is not P:H (degree:cell size in m)" % item)
+        if not 1 <= cases[-1][0] <= 4:
+            sys.exit("--cases: degree %d is not in 1..4" % cases[-1][0])
+        if core and any(abs(c / cases[-1][1] - round(c / cases[-1][1])) > 1e-9
+                        for c in core):
+            sys.exit("--cases: %g m does not divide the 36 x 3 x 21 km core of "
+                     "the graded box" % cases[-1][1])
+    return cases
+
+
+def core_cells(h, core=GRADED_CORE):
+    """The 'Scene/Box/Number of cells' entry for cells of @p h m in the core."""
+    return "Scene/Box/Number of cells=%d, %d, %d" % tuple(round(c / h) for c in core)
