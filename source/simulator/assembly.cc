@@ -322,7 +322,7 @@ namespace rupture
             "velocity>."));
       }
     // The time step, and for the explicit scheme its stability check.
-    time_step = requested_time_step;
+    state.time_step = requested_time_step;
     if (scheme == Scheme::explicit_central_difference)
       {
         const double omega = compute_highest_frequency();
@@ -334,14 +334,14 @@ namespace rupture
         pcout << "   Stable explicit time step: " << std::setprecision(6)
               << stable_time_step << " s (highest element frequency " << omega
               << " rad/s)\n";
-        if (time_step == 0)
-          time_step = time_parameters.courant_fraction * stable_time_step;
+        if (state.time_step == 0)
+          state.time_step = time_parameters.courant_fraction * stable_time_step;
         else
           AssertThrow(time_parameters.allow_unstable_time_step ||
-                        time_step <= stable_time_step,
+                        state.time_step <= stable_time_step,
                       ExcMessage(
                         "<Time integration/Time step> = " +
-                        std::to_string(time_step) +
+                        std::to_string(state.time_step) +
                         " s is above the stable limit of the explicit scheme "
                         "on this mesh, " +
                         std::to_string(stable_time_step) +
@@ -349,7 +349,7 @@ namespace rupture
                         "step> = 0 to use <Courant fraction> times it, or "
                         "use the implicit scheme."));
       }
-    time_step = duration / n_steps_of_phase(duration, time_step);
+    state.time_step = duration / n_steps_of_phase(duration, state.time_step);
 
     integrator = TimeIntegration::create(scheme, *this);
     integrator->prepare();
@@ -583,7 +583,7 @@ namespace rupture
   double
   Simulator<dim>::compute_l2_error(const double time) const
   {
-    const VectorType &u_ghost = ghosted_copy(0, displacement);
+    const VectorType &u_ghost = ghosted_copy(0, state.displacement);
     exact_displacement->set_time(time);
     const hp::QCollection<dim>  q_cells(QGauss<dim>(fe_degree + 2));
     hp::FEValues<dim>           hp_values(fe_collection,

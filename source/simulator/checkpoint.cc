@@ -143,9 +143,9 @@ namespace rupture
   {
     // The motion, and the forces of the last step that the energy sums'
     // trapezoidal rules use at the next one.
-    std::vector<VectorType *> fields = {&displacement,
-                                        &velocity,
-                                        &acceleration,
+    std::vector<VectorType *> fields = {&state.displacement,
+                                        &state.velocity,
+                                        &state.acceleration,
                                         &applied_force,
                                         &damping_force,
                                         &contact_force};
@@ -183,7 +183,7 @@ namespace rupture
     // that a new run in this directory removes them like every other
     // result of this one.
     char step_name[32];
-    std::snprintf(step_name, sizeof(step_name), "step-%09u", step);
+    std::snprintf(step_name, sizeof(step_name), "step-%09u", state.step);
     {
       const std::string final_dir    = std::string("checkpoint/") + step_name;
       std::vector<std::string> names = {"fault." + std::to_string(rank)};
@@ -240,12 +240,12 @@ namespace rupture
                                             double(n_ranks),
                                             double(dof_handler.n_dofs()),
                                             double(fields.size()),
-                                            time,
+                                            state.time,
                                             phase_time,
-                                            double(step),
+                                            double(state.step),
                                             dynamic_start,
                                             double(in_dynamic_phase),
-                                            time_step,
+                                            state.time_step,
                                             initial_energy,
                                             kinetic_energy,
                                             strain_energy,
@@ -331,12 +331,12 @@ namespace rupture
     for (VectorType *v : fields)
       distribute_hanging(*v);
 
-    time                   = s[4];
+    state.time             = s[4];
     phase_time             = s[5];
-    step                   = static_cast<unsigned int>(s[6]);
+    state.step             = static_cast<unsigned int>(s[6]);
     dynamic_start          = s[7];
     in_dynamic_phase       = s[8] != 0;
-    time_step              = s[9];
+    state.time_step        = s[9];
     initial_energy         = s[10];
     kinetic_energy         = s[11];
     strain_energy          = s[12];
@@ -362,7 +362,7 @@ namespace rupture
         for (unsigned int r = 0; r < n_saved_ranks; ++r)
           files.push_back(resume_from + "/fault." + std::to_string(r));
         fault->load(files);
-        fault->set_time(time);
+        fault->set_time(state.time);
       }
     termination.load(in);
     BinaryIO::read(in, integrator_state);

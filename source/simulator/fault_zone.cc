@@ -52,7 +52,7 @@ namespace rupture
   double
   Simulator<dim>::fault_zone_viscosity() const
   {
-    return fault_zone ? fault_zone_fraction * time_step : 0.;
+    return fault_zone ? fault_zone_fraction * state.time_step : 0.;
   }
 
 

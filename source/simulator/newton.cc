@@ -68,8 +68,8 @@ namespace rupture
                                    const double sign)
   {
     TimerOutput::Scope t(timer, "Fault contact");
-    fault->assemble(ghosted_copy(0, displacement),
-                    time_step,
+    fault->assemble(ghosted_copy(0, state.displacement),
+                    state.time_step,
                     hanging_constraints,
                     force,
                     increment_constraints,
@@ -89,17 +89,17 @@ namespace rupture
   {
     VectorType free_residual(residual), increment(residual), scratch(residual);
 
-    displacement = old_u;
+    state.displacement = old_u;
     if (predicted_increment)
       {
         // Only at the free DoFs: the prescribed ones follow their boundary
         // motion, the hanging ones their parents.
         scratch = *predicted_increment;
         increment_constraints.set_zero(scratch);
-        displacement += scratch;
+        state.displacement += scratch;
       }
-    add_kinematic_increment(displacement);
-    distribute_hanging(displacement);
+    add_kinematic_increment(state.displacement);
+    distribute_hanging(state.displacement);
 
     double reference = 0;
     // The displacement that the step's force scale produces through the
@@ -168,7 +168,7 @@ namespace rupture
                 // node stuck in this and the last iteration was linear, so
                 // its one solve is exact.
                 const double change = [&]() {
-                  scratch = displacement;
+                  scratch = state.displacement;
                   scratch -= old_u;
                   return scratch.l2_norm();
                 }();
@@ -182,7 +182,8 @@ namespace rupture
                 // of the whole displacement, or of the displacement the
                 // step's force scale produces, counts as converged.
                 const double round_off =
-                  1e-11 * std::max(displacement.l2_norm(), displacement_scale);
+                  1e-11 *
+                  std::max(state.displacement.l2_norm(), displacement_scale);
                 const bool displacement_ok =
                   increment_norm <=
                   std::max(newton_displacement_tolerance * change, round_off);
@@ -208,8 +209,8 @@ namespace rupture
               {
                 const Fault::Statistics f = fault->statistics();
                 std::ostringstream      message;
-                message << "Newton's method did not converge in step " << step
-                        << " (t = " << phase_time << " s): ";
+                message << "Newton's method did not converge in step "
+                        << state.step << " (t = " << phase_time << " s): ";
                 if (stalled)
                   {
                     std::vector<unsigned long> recent(signatures.end() - window,
@@ -407,12 +408,12 @@ namespace rupture
             // a Newton step, and it puts those nodes into stick, from where
             // the next iteration is exact for them; a shortened step would
             // leave them slipping and the limit would repeat.
-            const VectorType u_iteration(displacement);
+            const VectorType u_iteration(state.displacement);
             double           alpha = 1;
             for (unsigned int trial = 0;; ++trial)
               {
-                displacement = u_iteration;
-                displacement.add(alpha, increment);
+                state.displacement = u_iteration;
+                state.displacement.add(alpha, increment);
                 update_rates();
                 compute_residual();
                 free_residual = residual;
@@ -442,11 +443,11 @@ namespace rupture
               }
           }
         else
-          displacement += increment;
+          state.displacement += increment;
         increment_norm         = increment.l2_norm();
         last_newton_iterations = k + 1;
       }
-    check_finite(displacement, "displacement");
+    check_finite(state.displacement, "displacement");
   }
 
 

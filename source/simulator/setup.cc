@@ -330,9 +330,9 @@ namespace rupture
     else
       system_matrix.clear();
 
-    for (VectorType *v : {&displacement,
-                          &velocity,
-                          &acceleration,
+    for (VectorType *v : {&state.displacement,
+                          &state.velocity,
+                          &state.acceleration,
                           &applied_force,
                           &damping_force,
                           &contact_force,

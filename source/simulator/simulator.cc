@@ -37,10 +37,7 @@ namespace rupture
                       Triangulation<dim>::smoothing_on_coarsening))
     , n_sides(1)
     , has_absorbing(false)
-    , time(0)
-    , time_step(0)
     , stable_time_step(0)
-    , step(0)
     , initial_energy(0)
     , kinetic_energy(0)
     , strain_energy(0)
@@ -230,7 +227,7 @@ namespace rupture
     read_checkpoint();
     if (termination.any())
       pcout << termination.description() << "\n";
-    pcout << "*** Continuing after step " << step
+    pcout << "*** Continuing after step " << state.step
           << " (t = " << std::setprecision(6) << phase_time << " s"
           << (time_parameters.loading_phase ?
                 (in_dynamic_phase ? " of the dynamic phase" :
@@ -316,8 +313,8 @@ namespace rupture
     statistics.set_columns(columns);
     statistics.add_row(statistics_row());
     if (fault)
-      fault_output->record(*fault, time);
-    receivers->record(displacement, velocity, time);
+      fault_output->record(*fault, state.time);
+    receivers->record(state.displacement, state.velocity, state.time);
     write_step_output(true);
 
     if (termination.any())
@@ -368,7 +365,7 @@ namespace rupture
     // dynamic phase: displacement, stress, fault tractions and slip
     // carry over; the body starts from rest (up to the boundary
     // velocities) with the acceleration of its current forces.
-    const double start = time;
+    const double start = state.time;
     pcout << "*** Dynamic phase (" << time_parameters.scheme_name()
           << ") from t = " << std::setprecision(6) << start << " s\n";
     prepare_phase(time_parameters.scheme,
@@ -387,17 +384,17 @@ namespace rupture
         fault_output->record(*fault, 0);
       }
     receivers->clear();
-    receivers->record(displacement, velocity, 0);
+    receivers->record(state.displacement, state.velocity, 0);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
-        velocity = 0;
-        set_kinematic_velocity(velocity);
+        state.velocity = 0;
+        set_kinematic_velocity(state.velocity);
         VectorType load(locally_owned_dofs, communicator);
-        assemble_load_vector(time, load);
+        assemble_load_vector(state.time, load);
         compute_acceleration(load);
-        compute_damping_force(velocity, damping_force);
+        compute_damping_force(state.velocity, damping_force);
         if (has_absorbing)
-          compute_absorbing_force(velocity, absorbing_force);
+          compute_absorbing_force(state.velocity, absorbing_force);
       }
     // The first snapshots of the dynamic phase's time series: its
     // initial state, at its time 0.
@@ -415,7 +412,7 @@ namespace rupture
     pcout << std::scientific << std::setprecision(6)
           << "Final state at t = " << phase_time << " s";
     if (time_parameters.loading_phase)
-      pcout << " of the dynamic phase (" << time
+      pcout << " of the dynamic phase (" << state.time
             << " s since the start of the run)";
     pcout << ":\n"
           << "   Initial energy       " << initial_energy << " J\n"
@@ -432,7 +429,8 @@ namespace rupture
               << "   Slipping nodes       " << f.n_slipping << " of "
               << f.n_nodes << "\n";
       }
-    pcout << "   Max |displacement|   " << displacement.linfty_norm() << " m\n";
+    pcout << "   Max |displacement|   " << state.displacement.linfty_norm()
+          << " m\n";
     if (exact_displacement)
       pcout << "   L2 error             " << last[10] << "\n";
     pcout << std::defaultfloat;
@@ -498,15 +496,16 @@ namespace rupture
     // phase (3e9 s + 0.3 s). A run continued from a checkpoint goes on
     // from the step after steps_done of the phase that started at
     // phase_start_time.
-    const double start          = (steps_done > 0) ? phase_start_time : time;
-    phase_start_time            = start;
-    steps_in_phase              = steps_done;
+    const double start = (steps_done > 0) ? phase_start_time : state.time;
+    phase_start_time   = start;
+    steps_in_phase     = steps_done;
     const double       end_time = start + duration;
     const unsigned int n_steps =
-      static_cast<unsigned int>(std::ceil(duration / time_step - 1e-9));
-    pcout << "   Time step " << std::setprecision(6) << time_step << " s"
-          << Utilities::readable_time(time_step, duration) << ", " << n_steps
-          << " steps to t = " << (start - dynamic_start) + duration << " s"
+      static_cast<unsigned int>(std::ceil(duration / state.time_step - 1e-9));
+    pcout << "   Time step " << std::setprecision(6) << state.time_step << " s"
+          << Utilities::readable_time(state.time_step, duration) << ", "
+          << n_steps << " steps to t = " << (start - dynamic_start) + duration
+          << " s"
           << Utilities::readable_time((start - dynamic_start) + duration,
                                       duration)
           << "\n";
@@ -525,23 +524,23 @@ namespace rupture
 
     for (unsigned int i = steps_done + 1; i <= n_steps; ++i)
       {
-        ++step;
+        ++state.step;
         steps_in_phase = i;
-        time           = (i == n_steps) ? end_time : start + i * time_step;
+        state.time = (i == n_steps) ? end_time : start + i * state.time_step;
         // The time since the start of the dynamic phase, without the
         // round-off of the absolute time after a long loading phase.
-        phase_time =
-          (start - dynamic_start) + ((i == n_steps) ? duration : i * time_step);
+        phase_time = (start - dynamic_start) +
+                     ((i == n_steps) ? duration : i * state.time_step);
         if (fault)
-          fault->set_time(time);
+          fault->set_time(state.time);
 
         integrator->step();
-        check_finite(displacement, "displacement");
+        check_finite(state.displacement, "displacement");
         // The displacement may still be finite when the energies computed
         // from it overflow: that is a blow-up too, and no value that is
         // not finite is ever written.
         const std::vector<double> row = statistics_row();
-        check_finite(displacement,
+        check_finite(state.displacement,
                      "energy computed from the displacement",
                      !std::all_of(row.begin(), row.end(), [](double x) {
                        return std::isfinite(x);
@@ -550,7 +549,7 @@ namespace rupture
         statistics.add_row(row);
         if (fault)
           fault_output->record(*fault, phase_time);
-        receivers->record(displacement, velocity, phase_time);
+        receivers->record(state.displacement, state.velocity, phase_time);
 
         // Early ends, and the peak slip rate of the watched phase.
         const Termination::Sample sample = termination_sample(row);
@@ -563,14 +562,16 @@ namespace rupture
         const bool ends_early = (reason != Termination::Reason::end_time);
 
         const bool stop = stop_when_weakening && fault->n_weakening() > 0;
-        if (step % screen_interval == 0 || i == n_steps || stop || ends_early)
+        if (state.step % screen_interval == 0 || i == n_steps || stop ||
+            ends_early)
           {
-            pcout << "*** Step " << step << ": t = " << std::scientific
+            pcout << "*** Step " << state.step << ": t = " << std::scientific
                   << std::setprecision(4) << phase_time << " s"
                   << Utilities::readable_time(phase_time, duration);
             if (in_dynamic_phase)
-              pcout << " (" << time << " s since the start of the run)";
-            pcout << ", dt = " << std::setprecision(2) << time_step << " s";
+              pcout << " (" << state.time << " s since the start of the run)";
+            pcout << ", dt = " << std::setprecision(2) << state.time_step
+                  << " s";
             if (fault)
               {
                 const Fault::Statistics f = fault->statistics();
@@ -586,7 +587,7 @@ namespace rupture
             if (!test_mode)
               {
                 const double elapsed = MPI_Wtime() - wall_time_start;
-                const double left    = elapsed / step * (n_steps - i);
+                const double left    = elapsed / state.step * (n_steps - i);
                 pcout << "  [" << std::fixed << std::setprecision(0)
                       << 100. * i / n_steps << "%, " << std::setprecision(1)
                       << left << " s left]";
@@ -601,7 +602,8 @@ namespace rupture
         // Every <Interval> steps, when write_step_output() found one asked
         // for (wall-clock interval, SIGUSR1), and at the end of the run.
         if (checkpoints_enabled() &&
-            ((checkpoint_interval > 0 && step % checkpoint_interval == 0) ||
+            ((checkpoint_interval > 0 &&
+              state.step % checkpoint_interval == 0) ||
              checkpoint_requested || i == n_steps || ends_early))
           write_checkpoint();
         if (ends_early)
@@ -615,7 +617,7 @@ namespace rupture
         if (stop)
           {
             pcout << "   A bonded zone of the fault reached its strength at "
-                  << "t = " << std::setprecision(6) << time
+                  << "t = " << std::setprecision(6) << state.time
                   << " s: the loading phase ends.\n";
             return false;
           }
@@ -636,7 +638,7 @@ namespace rupture
     // overflowed yet.
     if (current_scheme() !=
           TimeIntegration::Scheme::explicit_central_difference ||
-        !(time_step > stable_time_step))
+        !(state.time_step > stable_time_step))
       return;
     const double error = kinetic_energy + strain_energy + damping_dissipation +
                          fault_work - external_work - initial_energy;
@@ -649,15 +651,15 @@ namespace rupture
     if (!(scale > 0) || std::abs(error) <= 0.5 * scale)
       return;
     // (Collective: every rank has the same energies.)
-    const std::string  where = locate_largest(displacement);
+    const std::string  where = locate_largest(state.displacement);
     std::ostringstream message;
-    message << "At step " << step << " (t = " << phase_time
+    message << "At step " << state.step << " (t = " << phase_time
             << " s) the energy balance error is " << std::abs(error) / scale
             << " of the energy in play, with the displacement " << where
             << ": the explicit scheme is unstable, and the run was stopped "
                "before writing this step. Its time step is "
-            << time_step << " s against the stable limit " << stable_time_step
-            << " s. Reduce <Time integration/Time step>.";
+            << state.time_step << " s against the stable limit "
+            << stable_time_step << " s. Reduce <Time integration/Time step>.";
     AssertThrow(false, ExcMessage(message.str()));
   }
 
@@ -667,9 +669,9 @@ namespace rupture
   std::vector<double>
   Simulator<dim>::statistics_row() const
   {
-    std::vector<double> row = {static_cast<double>(step),
+    std::vector<double> row = {static_cast<double>(state.step),
                                phase_time,
-                               time_step,
+                               state.time_step,
                                static_cast<double>(last_linear_iterations),
                                kinetic_energy,
                                strain_energy,
@@ -680,7 +682,7 @@ namespace rupture
                                  external_work - initial_energy,
                                test_mode ? 0. : MPI_Wtime() - wall_time_start};
     if (exact_displacement)
-      row.push_back(compute_l2_error(time));
+      row.push_back(compute_l2_error(state.time));
     // One reduction over the fault for all its columns.
     const Fault::Statistics f =
       fault ? fault->statistics() : Fault::Statistics();
@@ -714,7 +716,7 @@ namespace rupture
     if (time_parameters.loading_phase)
       {
         row.push_back(in_dynamic_phase ? 1 : 0);
-        row.push_back(time);
+        row.push_back(state.time);
       }
     return row;
   }
@@ -750,7 +752,8 @@ namespace rupture
     // step, a stop on a signal) writes everything that is written at all.
     const bool all = force || signal != 0;
     const auto due = [&](const double interval, const double next) {
-      return interval >= 0 && (all || phase_time >= next - 1e-9 * time_step);
+      return interval >= 0 &&
+             (all || phase_time >= next - 1e-9 * state.time_step);
     };
     const bool volume_due = due(output_interval, next_output_time);
     const bool fault_due =
@@ -761,14 +764,14 @@ namespace rupture
     if (!(all || volume_due || fault_due || flags[1] != 0))
       return;
     TimerOutput::Scope t(timer, "Output");
-    receivers->write(*output_directory, time_step);
+    receivers->write(*output_directory, state.time_step);
     if (volume_due)
       {
         volume_output->write(dof_handler,
-                             ghosted_copy(0, displacement),
-                             ghosted_copy(1, velocity),
+                             ghosted_copy(0, state.displacement),
+                             ghosted_copy(1, state.velocity),
                              phase_time,
-                             step);
+                             state.step);
         next_output_time = phase_time + output_interval;
       }
     if (fault_due)
@@ -776,13 +779,13 @@ namespace rupture
         fault_output->write_surface(*fault,
                                     *output_directory,
                                     phase_time,
-                                    step);
+                                    state.step);
         next_fault_output_time = phase_time + fault_output_interval;
       }
     if (fault)
       fault_output->write_tables(*fault,
                                  *output_directory,
-                                 time_step,
+                                 state.time_step,
                                  test_mode);
     if (root)
       statistics.write(output_directory->record("statistics"));
@@ -794,7 +797,7 @@ namespace rupture
           write_checkpoint();
         std::ostringstream what;
         what << "Stopped by " << Interruption::signal_name(signal)
-             << " after step " << step << " (t = " << phase_time
+             << " after step " << state.step << " (t = " << phase_time
              << " s). The results of every step done are written in "
              << output_directory->absolute_name() << ".";
         throw Interruption::Stopped(signal, what.str());

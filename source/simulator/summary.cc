@@ -23,11 +23,12 @@ namespace rupture
     const double peak_max = dealii::Utilities::MPI::max(peak, communicator);
     const double peak_sum = dealii::Utilities::MPI::sum(peak, communicator);
     pcout << std::defaultfloat << std::setprecision(4)
-          << "   Time loop: " << step << " steps of " << n_dofs << " DoFs in "
-          << time_loop_seconds << " s on " << n_ranks << " rank(s): "
-          << (step > 0 ?
-                1e9 * time_loop_seconds * n_ranks / (double(n_dofs) * step) :
-                0.)
+          << "   Time loop: " << state.step << " steps of " << n_dofs
+          << " DoFs in " << time_loop_seconds << " s on " << n_ranks
+          << " rank(s): "
+          << (state.step > 0 ? 1e9 * time_loop_seconds * n_ranks /
+                                 (double(n_dofs) * state.step) :
+                               0.)
           << " ns per DoF-step per core\n"
           << "   Peak memory: " << peak_max / 1048576.
           << " MB on the largest rank, " << peak_sum / 1048576.
@@ -151,9 +152,9 @@ namespace rupture
         << "  \"dimension\": " << dim << ",\n"
         << "  \"ranks\": " << n_ranks << ",\n"
         << "  \"dofs\": " << dof_handler.n_dofs() << ",\n"
-        << "  \"steps\": " << step << ",\n"
+        << "  \"steps\": " << state.step << ",\n"
         << "  \"time\": " << json_number(phase_time) << ",\n"
-        << "  \"time since the start of the run\": " << json_number(time)
+        << "  \"time since the start of the run\": " << json_number(state.time)
         << ",\n"
         << "  \"wall time\": "
         << json_number(test_mode ? 0. : MPI_Wtime() - wall_time_start);

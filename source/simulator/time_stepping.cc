@@ -149,7 +149,8 @@ namespace rupture
   {
     for (const auto &k : kinematic_dofs)
       u(k.dof) =
-        u(k.dof) + kinematic_velocity(k, time - 0.5 * time_step) * time_step;
+        u(k.dof) + kinematic_velocity(k, state.time - 0.5 * state.time_step) *
+                     state.time_step;
     u.compress(VectorOperation::insert);
   }
 
@@ -173,7 +174,7 @@ namespace rupture
   Simulator<dim>::set_kinematic_velocity(VectorType &v) const
   {
     for (const auto &k : kinematic_dofs)
-      v(k.dof) = kinematic_velocity(k, time);
+      v(k.dof) = kinematic_velocity(k, state.time);
     v.compress(VectorOperation::insert);
   }
 
@@ -246,14 +247,14 @@ namespace rupture
       return;
 
     std::ostringstream message;
-    message << "At step " << step << " (t = " << phase_time << " s) the "
+    message << "At step " << state.step << " (t = " << phase_time << " s) the "
             << what << " is no longer finite, " << locate_largest(v)
             << "; the run was stopped before writing it. ";
     if (current_scheme() ==
         TimeIntegration::Scheme::explicit_central_difference)
-      message << "The explicit scheme blew up: its time step " << time_step
-              << " s against the stable limit " << stable_time_step
-              << " s. Reduce <Time integration/Time step>.";
+      message << "The explicit scheme blew up: its time step "
+              << state.time_step << " s against the stable limit "
+              << stable_time_step << " s. Reduce <Time integration/Time step>.";
     else if (fault)
       message << "Likely causes: fault penalties far above the stiffness "
                  "of the elements next to the fault, slip weakening steeper "
@@ -273,21 +274,21 @@ namespace rupture
   {
     // M a_0 = f - K u_0 - C v_0 on the free DoFs.
     VectorType r(load), tmp(load);
-    apply_stiffness(displacement, tmp);
+    apply_stiffness(state.displacement, tmp);
     r -= tmp;
-    compute_damping_force(velocity, tmp);
+    compute_damping_force(state.velocity, tmp);
     r -= tmp;
     r -= contact_force;
     increment_constraints.set_zero(r);
     if (use_lumped_mass)
       {
-        acceleration = r;
+        state.acceleration = r;
         for (const auto i : locally_owned_dofs)
-          acceleration(i) =
+          state.acceleration(i) =
             (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
               r(i) / lumped_mass(i) :
               0.;
-        acceleration.compress(VectorOperation::insert);
+        state.acceleration.compress(VectorOperation::insert);
       }
     else if (r.l2_norm() > 0)
       {
@@ -308,12 +309,12 @@ namespace rupture
         jacobi.inverse.compress(VectorOperation::insert);
         SolverControl        control(1000, 1e-14 * r.l2_norm());
         SolverCG<VectorType> cg(control);
-        acceleration = 0;
-        cg.solve(op, acceleration, r, jacobi);
-        distribute_hanging(acceleration);
+        state.acceleration = 0;
+        cg.solve(op, state.acceleration, r, jacobi);
+        distribute_hanging(state.acceleration);
       }
     else
-      acceleration = 0;
+      state.acceleration = 0;
   }
 
 
@@ -341,10 +342,10 @@ namespace rupture
             {
               const unsigned int c =
                 fe.system_to_component_index(i).first % dim;
-              const double u        = initial_displacement->value(points[i], c);
-              const double v        = initial_velocity->value(points[i], c);
-              displacement(dofs[i]) = u;
-              velocity(dofs[i])     = v + side * half_slip_velocity[c];
+              const double u = initial_displacement->value(points[i], c);
+              const double v = initial_velocity->value(points[i], c);
+              state.displacement(dofs[i]) = u;
+              state.velocity(dofs[i])     = v + side * half_slip_velocity[c];
               if (error.empty() && !(std::isfinite(u) && std::isfinite(v)))
                 {
                   std::ostringstream text;
@@ -359,10 +360,10 @@ namespace rupture
             }
       });
     rupture::Utilities::throw_if_any(error, communicator);
-    displacement.compress(VectorOperation::insert);
-    velocity.compress(VectorOperation::insert);
-    distribute_hanging(displacement);
-    distribute_hanging(velocity);
+    state.displacement.compress(VectorOperation::insert);
+    state.velocity.compress(VectorOperation::insert);
+    distribute_hanging(state.displacement);
+    distribute_hanging(state.velocity);
   }
 
 
@@ -383,9 +384,9 @@ namespace rupture
         // The fault traction that the initial state calls for: a prestress
         // above the strength makes the fault slip from the first step.
         VectorType r(load), tmp(load);
-        apply_stiffness(displacement, tmp);
+        apply_stiffness(state.displacement, tmp);
         r -= tmp;
-        compute_damping_force(velocity, tmp);
+        compute_damping_force(state.velocity, tmp);
         r -= tmp;
         initial_split_node_force(r, contact_force);
       }
@@ -394,23 +395,23 @@ namespace rupture
 
     if (current_scheme() == TimeIntegration::Scheme::quasi_static)
       {
-        velocity     = 0;
-        acceleration = 0;
+        state.velocity     = 0;
+        state.acceleration = 0;
       }
     else
       {
-        set_kinematic_velocity(velocity);
+        set_kinematic_velocity(state.velocity);
         compute_acceleration(load);
       }
 
     // Forces and energies of the initial state.
     VectorType ku(load);
-    apply_stiffness(displacement, ku);
-    compute_damping_force(velocity, damping_force);
+    apply_stiffness(state.displacement, ku);
+    compute_damping_force(state.velocity, damping_force);
     VectorType ma(load);
     ma = 0;
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
-      apply_mass(acceleration, ma);
+      apply_mass(state.acceleration, ma);
     // The force the body is in balance with at the start. A quasi-static
     // run follows an equilibrium path, on which the loads grow from the
     // internal force K u_0 to their full value within the first step.
@@ -424,13 +425,13 @@ namespace rupture
     applied_force.compress(VectorOperation::insert);
 
     hanging_constraints.set_zero(ku);
-    strain_energy = 0.5 * (displacement * ku);
+    strain_energy = 0.5 * (state.displacement * ku);
     VectorType mv(load);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
-        apply_mass(velocity, mv);
+        apply_mass(state.velocity, mv);
         hanging_constraints.set_zero(mv);
-        kinetic_energy = 0.5 * (velocity * mv);
+        kinetic_energy = 0.5 * (state.velocity * mv);
       }
     external_work       = 0;
     damping_dissipation = 0;
@@ -438,7 +439,7 @@ namespace rupture
     if (has_absorbing)
       {
         absorbing_force.reinit(load);
-        compute_absorbing_force(velocity, absorbing_force);
+        compute_absorbing_force(state.velocity, absorbing_force);
       }
     initial_energy = kinetic_energy + strain_energy;
   }
@@ -467,7 +468,7 @@ namespace rupture
         force(i) = load(i) - residual(i);
     force.compress(VectorOperation::insert);
 
-    VectorType increment(displacement);
+    VectorType increment(state.displacement);
     increment -= old_displacement;
     external_work += 0.5 * ((force * increment) + (applied_force * increment));
     damping_dissipation +=
@@ -481,7 +482,7 @@ namespace rupture
         // (the schemes' damping force may use a predicted velocity
         // instead, so this split is exact only to O(dt)).
         VectorType f(load);
-        compute_absorbing_force(velocity, f);
+        compute_absorbing_force(state.velocity, f);
         absorbed_energy +=
           0.5 * ((f * increment) + (absorbing_force * increment));
         absorbing_force = f;
@@ -491,14 +492,14 @@ namespace rupture
     if (stiffness_force)
       tmp = *stiffness_force;
     else
-      apply_stiffness(displacement, tmp);
+      apply_stiffness(state.displacement, tmp);
     hanging_constraints.set_zero(tmp);
-    strain_energy = 0.5 * (displacement * tmp);
+    strain_energy = 0.5 * (state.displacement * tmp);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
-        apply_mass(velocity, tmp);
+        apply_mass(state.velocity, tmp);
         hanging_constraints.set_zero(tmp);
-        kinetic_energy = 0.5 * (velocity * tmp);
+        kinetic_energy = 0.5 * (state.velocity * tmp);
       }
   }
 
@@ -519,11 +520,11 @@ namespace rupture
           1. / lumped_mass(i) :
           0.;
     inverse.compress(VectorOperation::insert);
-    fault->assemble_split_node(displacement,
-                               velocity,
+    fault->assemble_split_node(state.displacement,
+                               state.velocity,
                                residual,
                                inverse,
-                               time_step,
+                               state.time_step,
                                time_parameters.gamma,
                                force);
   }
@@ -541,14 +542,14 @@ namespace rupture
       {
         // The contact forces of the converged state, for the work done on
         // the fault, and the accepted fault state.
-        VectorType force(displacement);
+        VectorType force(state.displacement);
         force = 0;
         assemble_contact(force, false, 1);
-        VectorType increment(displacement);
+        VectorType increment(state.displacement);
         increment -= old_u;
         fault_work += 0.5 * ((force * increment) + (contact_force * increment));
         contact_force = force;
-        fault->commit(time_step, time);
+        fault->commit(state.time_step, state.time);
       }
     update_energy(old_u, load, residual, new_damping_force);
   }

@@ -23,7 +23,7 @@ namespace rupture
     {
       Simulator<dim> &s = simulator;
       // (M (1 + gamma dt alpha) + gamma dt C_abs) a = r is diagonal.
-      const double g = s.time_parameters.gamma * s.time_step;
+      const double g = s.time_parameters.gamma * s.state.time_step;
       for (VectorType *v : {&inverse_diagonal,
                             &old_displacement,
                             &stiffness_force,
@@ -54,7 +54,7 @@ namespace rupture
                              "with <Damping/Rayleigh alpha> = " +
                              std::to_string(s.rayleigh_alpha) +
                              " 1/s and the time step " +
-                             std::to_string(s.time_step) +
+                             std::to_string(s.state.time_step) +
                              " s. Allowed: a finite product of the two (a few "
                              "percent of critical damping is alpha ~ 0.1-1 "
                              "1/s)."));
@@ -74,19 +74,20 @@ namespace rupture
       Simulator<dim>    &s = simulator;
       TimerOutput::Scope t(s.timer, "Explicit step");
       const double       gamma = s.time_parameters.gamma;
-      const double       dt    = s.time_step;
+      const double       dt    = s.state.time_step;
       const double       alpha = s.rayleigh_alpha;
       const double       beta  = s.rayleigh_beta;
       const double       eta   = s.fault_zone_viscosity();
-      const VectorType  &load  = s.current_load(s.time);
+      const VectorType  &load  = s.current_load(s.state.time);
       const unsigned int n     = dof_kind.size();
 
       // The owned arrays: every update below is one fused pass over them.
       const auto local = [](const VectorType &v) -> double * {
         return const_cast<double *>(v.trilinos_vector()[0]);
       };
-      double *const u = local(s.displacement), *const v = local(s.velocity),
-                    *const a  = local(s.acceleration),
+      double *const        u  = local(s.state.displacement),
+                    *const v  = local(s.state.velocity),
+                    *const a  = local(s.state.acceleration),
                     *const u0 = local(old_displacement),
                     *const r = local(residual), *const ff = local(fault_force);
       const double *const m = local(s.lumped_mass);
@@ -103,27 +104,29 @@ namespace rupture
           v[i] += (1 - gamma) * dt * a[i];
         }
       for (const auto &k : s.kinematic_dofs)
-        s.displacement(k.dof) = old_displacement(k.dof) +
-                                s.kinematic_velocity(k, s.time - 0.5 * dt) * dt;
-      s.displacement.compress(VectorOperation::insert);
-      s.set_kinematic_velocity(s.velocity);
-      s.distribute_hanging(s.displacement);
+        s.state.displacement(k.dof) =
+          old_displacement(k.dof) +
+          s.kinematic_velocity(k, s.state.time - 0.5 * dt) * dt;
+      s.state.displacement.compress(VectorOperation::insert);
+      s.set_kinematic_velocity(s.state.velocity);
+      s.distribute_hanging(s.state.displacement);
 
       // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
       //   - eta K_zone v~ - alpha M v~ - C_abs v~ - F_fault; the stiffness
       //   damping uses the predictor.
       // Without stiffness damping K u is read where the matrix-free
       // operator left it (no copy).
-      const double *ku =
-        (beta == 0) ? s.apply_stiffness_in_place(s.displacement) : nullptr;
+      const double *ku = (beta == 0) ?
+                           s.apply_stiffness_in_place(s.state.displacement) :
+                           nullptr;
       if (!ku)
         {
           if (beta == 0)
-            s.apply_stiffness(s.displacement, stiffness_force);
+            s.apply_stiffness(s.state.displacement, stiffness_force);
           else
             {
-              residual = s.displacement;
-              residual.add(beta, s.velocity);
+              residual = s.state.displacement;
+              residual.add(beta, s.state.velocity);
               s.apply_stiffness(residual, stiffness_force);
             }
           ku = local(stiffness_force);
@@ -132,7 +135,7 @@ namespace rupture
         r[i] =
           f[i] - ku[i] - alpha * m[i] * v[i] - (c_abs ? c_abs[i] * v[i] : 0.);
       if (eta != 0)
-        s.fault_zone->vmult_add(-eta, s.velocity, residual);
+        s.fault_zone->vmult_add(-eta, s.state.velocity, residual);
       // The fault's force, nonzero only at its entries: r - F_fault there.
       if (s.fault)
         {
@@ -140,8 +143,8 @@ namespace rupture
             ff[i] = 0;
           {
             TimerOutput::Scope t(s.timer, "Fault split nodes");
-            s.fault->assemble_split_node(s.displacement,
-                                         s.velocity,
+            s.fault->assemble_split_node(s.state.displacement,
+                                         s.state.velocity,
                                          residual,
                                          inverse_diagonal,
                                          dt,
@@ -156,16 +159,16 @@ namespace rupture
           a[i] = r[i] * inv_d[i];
           v[i] += gamma * dt * a[i];
         }
-      s.distribute_hanging(s.acceleration);
-      s.distribute_hanging(s.velocity);
+      s.distribute_hanging(s.state.acceleration);
+      s.distribute_hanging(s.state.velocity);
 
       // The energy budget of the step (see Simulator::update_energy(), of
       // which this is the fused form): with stiffness damping K u and K v
       // are products of their own, without it K u is known.
       if (beta != 0)
         {
-          s.apply_stiffness(s.velocity, residual);
-          s.apply_stiffness(s.displacement, stiffness_force);
+          s.apply_stiffness(s.state.velocity, residual);
+          s.apply_stiffness(s.state.displacement, stiffness_force);
           ku = local(stiffness_force);
         }
       const double *const kv   = (beta != 0) ? r : nullptr;
@@ -173,7 +176,7 @@ namespace rupture
       if (eta != 0)
         {
           zone_force = 0;
-          s.fault_zone->vmult_add(eta, s.velocity, zone_force);
+          s.fault_zone->vmult_add(eta, s.state.velocity, zone_force);
           zone = local(zone_force);
         }
       double *const applied = local(s.applied_force);
@@ -226,7 +229,7 @@ namespace rupture
       s.strain_energy  = 0.5 * sums[4];
       s.kinetic_energy = 0.5 * sums[5];
       if (s.fault)
-        s.fault->commit(dt, s.time);
+        s.fault->commit(dt, s.state.time);
     }
 
 

@@ -23,7 +23,7 @@ namespace rupture
     ImplicitNewmark<dim>::set_time_step(const double h)
     {
       Simulator<dim> &s = simulator;
-      s.time_step       = h;
+      s.state.time_step = h;
       // Effective stiffness of eq. 14: K + a0 M + a1 C, with
       // C = alpha M + beta K + C_absorbing.
       const NewmarkCoefficients c(s.time_parameters.beta,
@@ -78,7 +78,7 @@ namespace rupture
     {
       substep_depth     = 0;
       steps_without_cut = 0;
-      set_time_step(simulator.time_step);
+      set_time_step(simulator.state.time_step);
     }
 
 
@@ -97,18 +97,19 @@ namespace rupture
       using VectorType       = typename Simulator<dim>::VectorType;
       using NewtonFailure    = typename Simulator<dim>::NewtonFailure;
       Simulator<dim>    &s   = simulator;
-      const double       end = s.time, dt = s.time_step;
+      const double       end = s.state.time, dt = s.state.time_step;
       const unsigned int cuts    = s.max_step_cuts;
       unsigned int       deepest = 0;
       bool               cut     = false;
       std::function<void(double, double, unsigned int)> attempt =
         [&](const double t_start, const double h, const unsigned int depth) {
-          const VectorType u(s.displacement), v(s.velocity), a(s.acceleration);
-          if (h != s.time_step)
+          const VectorType u(s.state.displacement), v(s.state.velocity),
+            a(s.state.acceleration);
+          if (h != s.state.time_step)
             set_time_step(h);
-          s.time = t_start + h;
+          s.state.time = t_start + h;
           if (s.fault)
-            s.fault->set_time(s.time);
+            s.fault->set_time(s.state.time);
           // Give up early on a stalled Newton iteration only where the
           // step can still be cut; at the last level it iterates on.
           s.newton_may_cut = (depth < cuts);
@@ -126,9 +127,9 @@ namespace rupture
                   // the step once more without it before cutting it.
                   if (s.stick_crossings_limited == 0)
                     throw;
-                  s.displacement = u;
-                  s.velocity     = v;
-                  s.acceleration = a;
+                  s.state.displacement = u;
+                  s.state.velocity     = v;
+                  s.state.acceleration = a;
                   s.pcout << "    Newton failed with dt = " << h << " s ("
                           << failure.reason
                           << ") after limiting stick crossings: the step is "
@@ -152,9 +153,9 @@ namespace rupture
                                       std::to_string(depth) +
                                       " times (<Solver/Maximum step cuts>).",
                                     failure.reason);
-              s.displacement = u;
-              s.velocity     = v;
-              s.acceleration = a;
+              s.state.displacement = u;
+              s.state.velocity     = v;
+              s.state.acceleration = a;
               s.pcout << "    Newton failed with dt = " << h << " s ("
                       << failure.reason << "): the step is cut in half\n";
               ++s.n_step_cuts;
@@ -180,9 +181,9 @@ namespace rupture
           --substep_depth;
           steps_without_cut = 0;
         }
-      if (s.time_step != dt)
+      if (s.state.time_step != dt)
         set_time_step(dt);
-      s.time = end;
+      s.state.time = end;
     }
 
 
@@ -194,34 +195,37 @@ namespace rupture
       using VectorType            = typename Simulator<dim>::VectorType;
       Simulator<dim>           &s = simulator;
       TimerOutput::Scope        t(s.timer, "Implicit step");
-      const double              dt    = s.time_step;
+      const double              dt    = s.state.time_step;
       const double              gamma = s.time_parameters.gamma;
       const NewmarkCoefficients a(s.time_parameters.beta, gamma, dt);
 
-      const VectorType old_u(s.displacement), old_v(s.velocity),
-        old_a(s.acceleration);
-      VectorType load(s.displacement), residual(s.displacement),
-        tmp(s.displacement), cv(s.displacement);
-      s.assemble_load_vector(s.time, load);
+      const VectorType old_u(s.state.displacement), old_v(s.state.velocity),
+        old_a(s.state.acceleration);
+      VectorType load(s.state.displacement), residual(s.state.displacement),
+        tmp(s.state.displacement), cv(s.state.displacement);
+      s.assemble_load_vector(s.state.time, load);
 
       // New velocity and acceleration as functions of the new displacement
       // (Newmark, eq. 12), and the residual f - M a - C v - K u -
       // F_contact.
       const auto update_rates = [&]() {
-        s.acceleration = s.displacement;
-        s.acceleration -= old_u;
-        s.acceleration *= a.a0;
-        s.acceleration.add(-a.a2, old_v, -a.a3, old_a);
-        s.velocity = old_v;
-        s.velocity.add((1 - gamma) * dt, old_a, gamma * dt, s.acceleration);
+        s.state.acceleration = s.state.displacement;
+        s.state.acceleration -= old_u;
+        s.state.acceleration *= a.a0;
+        s.state.acceleration.add(-a.a2, old_v, -a.a3, old_a);
+        s.state.velocity = old_v;
+        s.state.velocity.add((1 - gamma) * dt,
+                             old_a,
+                             gamma * dt,
+                             s.state.acceleration);
       };
       const auto compute_residual = [&]() {
         residual = load;
-        s.apply_stiffness(s.displacement, tmp);
+        s.apply_stiffness(s.state.displacement, tmp);
         residual -= tmp;
-        s.apply_mass(s.acceleration, tmp);
+        s.apply_mass(s.state.acceleration, tmp);
         residual -= tmp;
-        s.compute_damping_force(s.velocity, cv);
+        s.compute_damping_force(s.state.velocity, cv);
         residual -= cv;
         if (s.fault)
           {

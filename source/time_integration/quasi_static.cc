@@ -30,14 +30,14 @@ namespace rupture
       using VectorType     = typename Simulator<dim>::VectorType;
       Simulator<dim>    &s = simulator;
       TimerOutput::Scope t(s.timer, "Quasi-static step");
-      const VectorType   old_u(s.displacement);
-      VectorType         load(s.displacement), residual(s.displacement),
-        tmp(s.displacement), zero(s.displacement);
-      s.assemble_load_vector(s.time, load);
+      const VectorType   old_u(s.state.displacement);
+      VectorType load(s.state.displacement), residual(s.state.displacement),
+        tmp(s.state.displacement), zero(s.state.displacement);
+      s.assemble_load_vector(s.state.time, load);
 
       const auto compute_residual = [&]() {
         residual = load;
-        s.apply_stiffness(s.displacement, tmp);
+        s.apply_stiffness(s.state.displacement, tmp);
         residual -= tmp;
         if (s.fault)
           {
@@ -50,9 +50,9 @@ namespace rupture
         old_u, []() {}, compute_residual, residual);
 
       // The rate of the loading, for output; no inertia.
-      s.velocity = s.displacement;
-      s.velocity -= old_u;
-      s.velocity /= s.time_step;
+      s.state.velocity = s.state.displacement;
+      s.state.velocity -= old_u;
+      s.state.velocity /= s.state.time_step;
       zero = 0;
       s.finish_step(old_u, load, residual, zero);
     }

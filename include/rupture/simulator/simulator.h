@@ -20,6 +20,7 @@
 #include <rupture/solver/linear_solver.h>
 #include <rupture/time_integration/interface.h>
 #include <rupture/time_integration/newmark.h>
+#include <rupture/time_integration/time_state.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
@@ -562,8 +563,8 @@ namespace rupture
     VectorType            constant_load;
     bool                  has_absorbing;
 
-    // State.
-    double time;
+    /// Displacement, velocity, acceleration, time, step and its number.
+    TimeIntegration::TimeState state;
     /// Start of the dynamic phase (0 without a loading phase): the time 0
     /// of station files and rupture times.
     double dynamic_start = 0;
@@ -593,12 +594,7 @@ namespace rupture
      */
     void
            write_summary(const std::string &status, const std::string &message);
-    double time_step;
     double stable_time_step;
-    unsigned int step;
-    VectorType   displacement;
-    VectorType   velocity;
-    VectorType   acceleration;
     /// Total force applied to the body at the current time (loads plus
     /// reactions on kinematic boundaries) and damping force, for the energy
     /// budget.
