@@ -268,7 +268,9 @@ namespace rupture
   Simulator<dim>::n_steps_of_phase(const double duration,
                                    const double requested_time_step) const
   {
-    const double n_steps = std::ceil(duration / requested_time_step - 1e-9);
+    const double n_steps =
+      TimeIntegration::PhaseClock::steps_to_cover(duration,
+                                                  requested_time_step);
     if (!(n_steps >= 1 && n_steps <= 1e9))
       {
         std::ostringstream message;

@@ -235,31 +235,32 @@ namespace rupture
         std::ostringstream out;
         BinaryIO::write(out, std::string(format_name));
         BinaryIO::write(out, parameters_text);
-        BinaryIO::write(out,
-                        std::vector<double>{double(dim),
-                                            double(n_ranks),
-                                            double(dof_handler.n_dofs()),
-                                            double(fields.size()),
-                                            state.time,
-                                            phase_time,
-                                            double(state.step),
-                                            dynamic_start,
-                                            double(in_dynamic_phase),
-                                            state.time_step,
-                                            initial_energy,
-                                            kinetic_energy,
-                                            strain_energy,
-                                            external_work,
-                                            damping_dissipation,
-                                            absorbed_energy,
-                                            fault_work,
-                                            next_output_time,
-                                            next_fault_output_time,
-                                            peak_slip_rate,
-                                            double(last_linear_iterations),
-                                            double(last_newton_iterations),
-                                            phase_start_time,
-                                            double(steps_in_phase)});
+        BinaryIO::write(
+          out,
+          std::vector<double>{double(dim),
+                              double(n_ranks),
+                              double(dof_handler.n_dofs()),
+                              double(fields.size()),
+                              state.time,
+                              state.clock.phase_time,
+                              double(state.step),
+                              state.clock.dynamic_start,
+                              double(state.clock.in_dynamic_phase),
+                              state.time_step,
+                              initial_energy,
+                              kinetic_energy,
+                              strain_energy,
+                              external_work,
+                              damping_dissipation,
+                              absorbed_energy,
+                              fault_work,
+                              next_output_time,
+                              next_fault_output_time,
+                              peak_slip_rate,
+                              double(last_linear_iterations),
+                              double(last_newton_iterations),
+                              state.clock.phase_start_time,
+                              double(state.clock.steps_in_phase)});
         statistics.save(out);
         volume_output->save(out);
         receivers->save(out);
@@ -331,26 +332,26 @@ namespace rupture
     for (VectorType *v : fields)
       distribute_hanging(*v);
 
-    state.time             = s[4];
-    phase_time             = s[5];
-    state.step             = static_cast<unsigned int>(s[6]);
-    dynamic_start          = s[7];
-    in_dynamic_phase       = s[8] != 0;
-    state.time_step        = s[9];
-    initial_energy         = s[10];
-    kinetic_energy         = s[11];
-    strain_energy          = s[12];
-    external_work          = s[13];
-    damping_dissipation    = s[14];
-    absorbed_energy        = s[15];
-    fault_work             = s[16];
-    next_output_time       = s[17];
-    next_fault_output_time = s[18];
-    peak_slip_rate         = s[19];
-    last_linear_iterations = static_cast<unsigned int>(s[20]);
-    last_newton_iterations = static_cast<unsigned int>(s[21]);
-    phase_start_time       = s[22];
-    steps_in_phase         = static_cast<unsigned int>(s[23]);
+    state.time                   = s[4];
+    state.clock.phase_time       = s[5];
+    state.step                   = static_cast<unsigned int>(s[6]);
+    state.clock.dynamic_start    = s[7];
+    state.clock.in_dynamic_phase = s[8] != 0;
+    state.time_step              = s[9];
+    initial_energy               = s[10];
+    kinetic_energy               = s[11];
+    strain_energy                = s[12];
+    external_work                = s[13];
+    damping_dissipation          = s[14];
+    absorbed_energy              = s[15];
+    fault_work                   = s[16];
+    next_output_time             = s[17];
+    next_fault_output_time       = s[18];
+    peak_slip_rate               = s[19];
+    last_linear_iterations       = static_cast<unsigned int>(s[20]);
+    last_newton_iterations       = static_cast<unsigned int>(s[21]);
+    state.clock.phase_start_time = s[22];
+    state.clock.steps_in_phase   = static_cast<unsigned int>(s[23]);
 
     statistics.load(in);
     volume_output->load(in);

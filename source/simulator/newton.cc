@@ -210,7 +210,8 @@ namespace rupture
                 const Fault::Statistics f = fault->statistics();
                 std::ostringstream      message;
                 message << "Newton's method did not converge in step "
-                        << state.step << " (t = " << phase_time << " s): ";
+                        << state.step << " (t = " << state.clock.phase_time
+                        << " s): ";
                 if (stalled)
                   {
                     std::vector<unsigned long> recent(signatures.end() - window,

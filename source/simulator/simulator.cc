@@ -228,13 +228,13 @@ namespace rupture
     if (termination.any())
       pcout << termination.description() << "\n";
     pcout << "*** Continuing after step " << state.step
-          << " (t = " << std::setprecision(6) << phase_time << " s"
+          << " (t = " << std::setprecision(6) << state.clock.phase_time << " s"
           << (time_parameters.loading_phase ?
-                (in_dynamic_phase ? " of the dynamic phase" :
-                                    " of the loading phase") :
+                (state.clock.in_dynamic_phase ? " of the dynamic phase" :
+                                                " of the loading phase") :
                 "")
           << ")\n";
-    if (time_parameters.loading_phase && in_dynamic_phase)
+    if (time_parameters.loading_phase && state.clock.in_dynamic_phase)
       {
         // The dynamic phase's integrator and friction, without the resets
         // of its start (its state came from the checkpoint).
@@ -242,10 +242,10 @@ namespace rupture
                       time_parameters.time_step,
                       time_parameters.end_time);
         if (fault)
-          fault->continue_dynamic_phase(dynamic_start);
+          fault->continue_dynamic_phase(state.clock.dynamic_start);
       }
     integrator->restore_state(integrator_state);
-    run_phases(steps_in_phase);
+    run_phases(state.clock.steps_in_phase);
   }
 
 
@@ -332,7 +332,7 @@ namespace rupture
   Simulator<dim>::run_phases(const unsigned int steps_done)
   {
     // (The last step of a phase writes everything: run_phase() forces it.)
-    if (!time_parameters.loading_phase || in_dynamic_phase)
+    if (!time_parameters.loading_phase || state.clock.in_dynamic_phase)
       {
         run_phase(time_parameters.end_time, false, steps_done);
         return;
@@ -371,9 +371,7 @@ namespace rupture
     prepare_phase(time_parameters.scheme,
                   time_parameters.time_step,
                   time_parameters.end_time);
-    dynamic_start    = start;
-    phase_time       = 0;
-    in_dynamic_phase = true;
+    state.clock.start_dynamic_phase(start);
     volume_output->start_series("solution", "solution.pvd");
     next_output_time       = 0;
     next_fault_output_time = 0;
@@ -410,7 +408,7 @@ namespace rupture
   {
     const auto &last = statistics.last_row();
     pcout << std::scientific << std::setprecision(6)
-          << "Final state at t = " << phase_time << " s";
+          << "Final state at t = " << state.clock.phase_time << " s";
     if (time_parameters.loading_phase)
       pcout << " of the dynamic phase (" << state.time
             << " s since the start of the run)";
@@ -496,17 +494,17 @@ namespace rupture
     // phase (3e9 s + 0.3 s). A run continued from a checkpoint goes on
     // from the step after steps_done of the phase that started at
     // phase_start_time.
-    const double start = (steps_done > 0) ? phase_start_time : state.time;
-    phase_start_time   = start;
-    steps_in_phase     = steps_done;
-    const double       end_time = start + duration;
-    const unsigned int n_steps =
-      static_cast<unsigned int>(std::ceil(duration / state.time_step - 1e-9));
+    TimeIntegration::PhaseClock &clock = state.clock;
+    const double       start   = clock.begin_phase(state.time, steps_done);
+    const unsigned int n_steps = static_cast<unsigned int>(
+      TimeIntegration::PhaseClock::steps_to_cover(duration, state.time_step));
     pcout << "   Time step " << std::setprecision(6) << state.time_step << " s"
           << Utilities::readable_time(state.time_step, duration) << ", "
-          << n_steps << " steps to t = " << (start - dynamic_start) + duration
+          << n_steps
+          << " steps to t = " << (start - state.clock.dynamic_start) + duration
           << " s"
-          << Utilities::readable_time((start - dynamic_start) + duration,
+          << Utilities::readable_time((start - state.clock.dynamic_start) +
+                                        duration,
                                       duration)
           << "\n";
     const double loop_start = MPI_Wtime();
@@ -525,12 +523,9 @@ namespace rupture
     for (unsigned int i = steps_done + 1; i <= n_steps; ++i)
       {
         ++state.step;
-        steps_in_phase = i;
-        state.time = (i == n_steps) ? end_time : start + i * state.time_step;
         // The time since the start of the dynamic phase, without the
         // round-off of the absolute time after a long loading phase.
-        phase_time = (start - dynamic_start) +
-                     ((i == n_steps) ? duration : i * state.time_step);
+        state.time = clock.enter_step(i, n_steps, duration, state.time_step);
         if (fault)
           fault->set_time(state.time);
 
@@ -548,12 +543,14 @@ namespace rupture
         check_explicit_energy_balance();
         statistics.add_row(row);
         if (fault)
-          fault_output->record(*fault, phase_time);
-        receivers->record(state.displacement, state.velocity, phase_time);
+          fault_output->record(*fault, state.clock.phase_time);
+        receivers->record(state.displacement,
+                          state.velocity,
+                          state.clock.phase_time);
 
         // Early ends, and the peak slip rate of the watched phase.
         const Termination::Sample sample = termination_sample(row);
-        if (!time_parameters.loading_phase || in_dynamic_phase)
+        if (!time_parameters.loading_phase || state.clock.in_dynamic_phase)
           peak_slip_rate = std::max(peak_slip_rate, sample.max_slip_rate);
         std::string               message;
         const Termination::Reason reason =
@@ -566,9 +563,9 @@ namespace rupture
             ends_early)
           {
             pcout << "*** Step " << state.step << ": t = " << std::scientific
-                  << std::setprecision(4) << phase_time << " s"
-                  << Utilities::readable_time(phase_time, duration);
-            if (in_dynamic_phase)
+                  << std::setprecision(4) << state.clock.phase_time << " s"
+                  << Utilities::readable_time(state.clock.phase_time, duration);
+            if (state.clock.in_dynamic_phase)
               pcout << " (" << state.time << " s since the start of the run)";
             pcout << ", dt = " << std::setprecision(2) << state.time_step
                   << " s";
@@ -611,7 +608,7 @@ namespace rupture
             end_reason  = reason;
             end_message = message;
             pcout << "*** The run ends early at t = " << std::setprecision(6)
-                  << phase_time << " s: " << message << std::endl;
+                  << state.clock.phase_time << " s: " << message << std::endl;
             return false;
           }
         if (stop)
@@ -653,7 +650,7 @@ namespace rupture
     // (Collective: every rank has the same energies.)
     const std::string  where = locate_largest(state.displacement);
     std::ostringstream message;
-    message << "At step " << state.step << " (t = " << phase_time
+    message << "At step " << state.step << " (t = " << state.clock.phase_time
             << " s) the energy balance error is " << std::abs(error) / scale
             << " of the energy in play, with the displacement " << where
             << ": the explicit scheme is unstable, and the run was stopped "
@@ -670,7 +667,7 @@ namespace rupture
   Simulator<dim>::statistics_row() const
   {
     std::vector<double> row = {static_cast<double>(state.step),
-                               phase_time,
+                               state.clock.phase_time,
                                state.time_step,
                                static_cast<double>(last_linear_iterations),
                                kinetic_energy,
@@ -715,7 +712,7 @@ namespace rupture
       }
     if (time_parameters.loading_phase)
       {
-        row.push_back(in_dynamic_phase ? 1 : 0);
+        row.push_back(state.clock.in_dynamic_phase ? 1 : 0);
         row.push_back(state.time);
       }
     return row;
@@ -753,7 +750,7 @@ namespace rupture
     const bool all = force || signal != 0;
     const auto due = [&](const double interval, const double next) {
       return interval >= 0 &&
-             (all || phase_time >= next - 1e-9 * state.time_step);
+             (all || state.clock.phase_time >= next - 1e-9 * state.time_step);
     };
     const bool volume_due = due(output_interval, next_output_time);
     const bool fault_due =
@@ -770,17 +767,17 @@ namespace rupture
         volume_output->write(dof_handler,
                              ghosted_copy(0, state.displacement),
                              ghosted_copy(1, state.velocity),
-                             phase_time,
+                             state.clock.phase_time,
                              state.step);
-        next_output_time = phase_time + output_interval;
+        next_output_time = state.clock.phase_time + output_interval;
       }
     if (fault_due)
       {
         fault_output->write_surface(*fault,
                                     *output_directory,
-                                    phase_time,
+                                    state.clock.phase_time,
                                     state.step);
-        next_fault_output_time = phase_time + fault_output_interval;
+        next_fault_output_time = state.clock.phase_time + fault_output_interval;
       }
     if (fault)
       fault_output->write_tables(*fault,
@@ -797,7 +794,8 @@ namespace rupture
           write_checkpoint();
         std::ostringstream what;
         what << "Stopped by " << Interruption::signal_name(signal)
-             << " after step " << state.step << " (t = " << phase_time
+             << " after step " << state.step
+             << " (t = " << state.clock.phase_time
              << " s). The results of every step done are written in "
              << output_directory->absolute_name() << ".";
         throw Interruption::Stopped(signal, what.str());

@@ -105,7 +105,7 @@ namespace rupture
   Simulator<dim>::termination_sample(const std::vector<double> &row) const
   {
     Termination::Sample s;
-    s.time           = phase_time;
+    s.time           = state.clock.phase_time;
     s.kinetic_energy = row[4];
     if (fault)
       {
@@ -153,7 +153,7 @@ namespace rupture
         << "  \"ranks\": " << n_ranks << ",\n"
         << "  \"dofs\": " << dof_handler.n_dofs() << ",\n"
         << "  \"steps\": " << state.step << ",\n"
-        << "  \"time\": " << json_number(phase_time) << ",\n"
+        << "  \"time\": " << json_number(state.clock.phase_time) << ",\n"
         << "  \"time since the start of the run\": " << json_number(state.time)
         << ",\n"
         << "  \"wall time\": "

@@ -247,9 +247,9 @@ namespace rupture
       return;
 
     std::ostringstream message;
-    message << "At step " << state.step << " (t = " << phase_time << " s) the "
-            << what << " is no longer finite, " << locate_largest(v)
-            << "; the run was stopped before writing it. ";
+    message << "At step " << state.step << " (t = " << state.clock.phase_time
+            << " s) the " << what << " is no longer finite, "
+            << locate_largest(v) << "; the run was stopped before writing it. ";
     if (current_scheme() ==
         TimeIntegration::Scheme::explicit_central_difference)
       message << "The explicit scheme blew up: its time step "

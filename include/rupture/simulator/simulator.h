@@ -216,9 +216,6 @@ namespace rupture
     /// The time integrator's state read from a checkpoint, restored once
     /// the phase's integrator is prepared.
     std::vector<double> integrator_state;
-    /// The current phase's start time and the steps done in it.
-    double       phase_start_time = 0;
-    unsigned int steps_in_phase   = 0;
     bool
     checkpoints_enabled() const
     {
@@ -563,19 +560,9 @@ namespace rupture
     VectorType            constant_load;
     bool                  has_absorbing;
 
-    /// Displacement, velocity, acceleration, time, step and its number.
+    /// Displacement, velocity, acceleration, time, step, its number and
+    /// the phase clock.
     TimeIntegration::TimeState state;
-    /// Start of the dynamic phase (0 without a loading phase): the time 0
-    /// of station files and rupture times.
-    double dynamic_start = 0;
-    /// The time of the current phase's clock: since the start of the
-    /// dynamic phase (in its steps and after), since the start of the run
-    /// before. Computed from step counts, without the round-off of time -
-    /// dynamic_start after a long loading phase. Printed and written
-    /// everywhere; the absolute time goes in a column of its own.
-    double phase_time = 0;
-    /// Whether the dynamic phase after a loading phase has started.
-    bool in_dynamic_phase = false;
     /// Early ends (the Termination subsection), why the run ended and the
     /// largest slip rate of the dynamic phase, for summary.json.
     Termination::Criteria termination;

@@ -1,6 +1,8 @@
 #ifndef rupture_time_integration_time_state_h
 #define rupture_time_integration_time_state_h
 
+#include <rupture/time_integration/phase_clock.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 namespace rupture
@@ -14,9 +16,8 @@ namespace rupture
      * integrators, the energy budget, the output and the checkpoints read
      * and write it through this one object.
      *
-     * `time` is the absolute time of the run (s). The clock of a phase
-     * (its start, the time since the dynamic phase started) is kept apart,
-     * by the simulator.
+     * `time` is the absolute time of the run (s); `clock` knows when the
+     * current phase and the dynamic phase started, and the time since.
      */
     struct TimeState
     {
@@ -31,6 +32,8 @@ namespace rupture
       double time_step = 0;
       /// Steps taken since the start of the run.
       unsigned int step = 0;
+      /// The clock of the run's phases (loading, dynamic).
+      PhaseClock clock;
     };
   } // namespace TimeIntegration
 } // namespace rupture

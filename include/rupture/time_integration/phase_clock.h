@@ -1,0 +1,97 @@
+#ifndef rupture_time_integration_phase_clock_h
+#define rupture_time_integration_phase_clock_h
+
+#include <cmath>
+
+namespace rupture
+{
+  namespace TimeIntegration
+  {
+    /**
+     * The clock of the phases of a run: a quasi-static loading phase
+     * (gravity, plate motion) over years, then a dynamic phase of seconds.
+     *
+     * Steps are counted in the phase's own time. After a long loading
+     * phase the absolute time has lost the digits of a short dynamic phase
+     * (3e9 s + 0.3 s), so the time since the dynamic phase started
+     * (phase_time) is computed from step counts, and the absolute time of
+     * a step from the phase's start plus the steps taken in it, never by
+     * adding steps one by one.
+     */
+    struct PhaseClock
+    {
+      /// The time of the current phase's clock: since the start of the
+      /// dynamic phase (in its steps and after), since the start of the run
+      /// before. Printed and written everywhere; the absolute time goes in
+      /// a column of its own.
+      double phase_time = 0;
+      /// Start of the dynamic phase (0 without a loading phase): the time 0
+      /// of station files and rupture times.
+      double dynamic_start = 0;
+      /// Whether the dynamic phase after a loading phase has started.
+      bool in_dynamic_phase = false;
+      /// The absolute time at which the current phase started.
+      double phase_start_time = 0;
+      /// Steps done in the current phase.
+      unsigned int steps_in_phase = 0;
+
+      /**
+       * The number of steps of @p dt that cover @p duration (the last one
+       * may be shorter), as a floating-point number.
+       */
+      static double
+      steps_to_cover(const double duration, const double dt)
+      {
+        return std::ceil(duration / dt - 1e-9);
+      }
+
+      /**
+       * Start a phase at the absolute time @p now, or continue the current
+       * one after @p steps_done of its steps (a run read from a
+       * checkpoint). Returns the phase's start time.
+       */
+      double
+      begin_phase(const double now, const unsigned int steps_done)
+      {
+        const double start = (steps_done > 0) ? phase_start_time : now;
+        phase_start_time   = start;
+        steps_in_phase     = steps_done;
+        return start;
+      }
+
+      /**
+       * Enter step @p i of the @p n_steps steps of @p dt that cover
+       * @p duration from the phase's start: sets phase_time and the steps
+       * done, and returns the absolute time at the end of the step (the
+       * phase's end time at the last step).
+       */
+      double
+      enter_step(const unsigned int i,
+                 const unsigned int n_steps,
+                 const double       duration,
+                 const double       dt)
+      {
+        const double start    = phase_start_time;
+        const double end_time = start + duration;
+        steps_in_phase        = i;
+        phase_time =
+          (start - dynamic_start) + ((i == n_steps) ? duration : i * dt);
+        return (i == n_steps) ? end_time : start + i * dt;
+      }
+
+      /**
+       * The dynamic phase starts at the absolute time @p now: its clock
+       * reads 0.
+       */
+      void
+      start_dynamic_phase(const double now)
+      {
+        dynamic_start    = now;
+        phase_time       = 0;
+        in_dynamic_phase = true;
+      }
+    };
+  } // namespace TimeIntegration
+} // namespace rupture
+
+#endif
