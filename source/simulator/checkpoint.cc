@@ -146,11 +146,11 @@ namespace rupture
     std::vector<VectorType *> fields = {&state.displacement,
                                         &state.velocity,
                                         &state.acceleration,
-                                        &applied_force,
-                                        &damping_force,
-                                        &contact_force};
+                                        &energy.applied_force,
+                                        &energy.damping_force,
+                                        &energy.contact_force};
     if (has_absorbing)
-      fields.push_back(&absorbing_force);
+      fields.push_back(&energy.absorbing_force);
     return fields;
   }
 
@@ -247,13 +247,13 @@ namespace rupture
                               state.clock.dynamic_start,
                               double(state.clock.in_dynamic_phase),
                               state.time_step,
-                              initial_energy,
-                              kinetic_energy,
-                              strain_energy,
-                              external_work,
-                              damping_dissipation,
-                              absorbed_energy,
-                              fault_work,
+                              energy.initial,
+                              energy.kinetic,
+                              energy.strain,
+                              energy.external_work,
+                              energy.damping_dissipation,
+                              energy.absorbed,
+                              energy.fault_work,
                               next_output_time,
                               next_fault_output_time,
                               peak_slip_rate,
@@ -338,13 +338,13 @@ namespace rupture
     state.clock.dynamic_start    = s[7];
     state.clock.in_dynamic_phase = s[8] != 0;
     state.time_step              = s[9];
-    initial_energy               = s[10];
-    kinetic_energy               = s[11];
-    strain_energy                = s[12];
-    external_work                = s[13];
-    damping_dissipation          = s[14];
-    absorbed_energy              = s[15];
-    fault_work                   = s[16];
+    energy.initial               = s[10];
+    energy.kinetic               = s[11];
+    energy.strain                = s[12];
+    energy.external_work         = s[13];
+    energy.damping_dissipation   = s[14];
+    energy.absorbed              = s[15];
+    energy.fault_work            = s[16];
     next_output_time             = s[17];
     next_fault_output_time       = s[18];
     peak_slip_rate               = s[19];

@@ -333,9 +333,9 @@ namespace rupture
     for (VectorType *v : {&state.displacement,
                           &state.velocity,
                           &state.acceleration,
-                          &applied_force,
-                          &damping_force,
-                          &contact_force,
+                          &energy.applied_force,
+                          &energy.damping_force,
+                          &energy.contact_force,
                           &constant_load})
       v->reinit(locally_owned_dofs, communicator);
     if (use_lumped_mass)

@@ -38,13 +38,6 @@ namespace rupture
     , n_sides(1)
     , has_absorbing(false)
     , stable_time_step(0)
-    , initial_energy(0)
-    , kinetic_energy(0)
-    , strain_energy(0)
-    , external_work(0)
-    , damping_dissipation(0)
-    , absorbed_energy(0)
-    , fault_work(0)
     , last_linear_iterations(0)
     , last_newton_iterations(0)
     , wall_time_start(0)
@@ -390,9 +383,9 @@ namespace rupture
         VectorType load(locally_owned_dofs, communicator);
         assemble_load_vector(state.time, load);
         compute_acceleration(load);
-        compute_damping_force(state.velocity, damping_force);
+        compute_damping_force(state.velocity, energy.damping_force);
         if (has_absorbing)
-          compute_absorbing_force(state.velocity, absorbing_force);
+          compute_absorbing_force(state.velocity, energy.absorbing_force);
       }
     // The first snapshots of the dynamic phase's time series: its
     // initial state, at its time 0.
@@ -413,7 +406,7 @@ namespace rupture
       pcout << " of the dynamic phase (" << state.time
             << " s since the start of the run)";
     pcout << ":\n"
-          << "   Initial energy       " << initial_energy << " J\n"
+          << "   Initial energy       " << energy.initial << " J\n"
           << "   Kinetic energy       " << last[4] << " J\n"
           << "   Strain energy        " << last[5] << " J\n"
           << "   Work of loads        " << last[6] << " J\n"
@@ -421,7 +414,7 @@ namespace rupture
     if (fault)
       {
         const Fault::Statistics f = fault->statistics();
-        pcout << "   Fault work           " << fault_work << " J\n"
+        pcout << "   Fault work           " << energy.fault_work << " J\n"
               << "   Frictional energy    " << f.frictional_energy << " J\n"
               << "   Max slip             " << f.max_slip << " m\n"
               << "   Slipping nodes       " << f.n_slipping << " of "
@@ -434,10 +427,10 @@ namespace rupture
     pcout << std::defaultfloat;
     // The balance error relative to the largest energy in play.
     const double scale = std::max({std::abs(last[4]) + std::abs(last[5]),
-                                   std::abs(fault_work),
+                                   std::abs(energy.fault_work),
                                    std::abs(last[6]),
                                    std::abs(last[7]),
-                                   std::abs(initial_energy),
+                                   std::abs(energy.initial),
                                    1e-300});
     // The implicit and quasi-static schemes close the budget to round-off
     // (trapezoidal rule); central difference only to O(dt^2).
@@ -637,14 +630,13 @@ namespace rupture
           TimeIntegration::Scheme::explicit_central_difference ||
         !(state.time_step > stable_time_step))
       return;
-    const double error = kinetic_energy + strain_energy + damping_dissipation +
-                         fault_work - external_work - initial_energy;
+    const double error = energy.balance_error();
     const double scale =
-      std::max({std::abs(kinetic_energy) + std::abs(strain_energy),
-                std::abs(external_work),
-                std::abs(damping_dissipation),
-                std::abs(fault_work),
-                std::abs(initial_energy)});
+      std::max({std::abs(energy.kinetic) + std::abs(energy.strain),
+                std::abs(energy.external_work),
+                std::abs(energy.damping_dissipation),
+                std::abs(energy.fault_work),
+                std::abs(energy.initial)});
     if (!(scale > 0) || std::abs(error) <= 0.5 * scale)
       return;
     // (Collective: every rank has the same energies.)
@@ -670,13 +662,11 @@ namespace rupture
                                state.clock.phase_time,
                                state.time_step,
                                static_cast<double>(last_linear_iterations),
-                               kinetic_energy,
-                               strain_energy,
-                               external_work,
-                               damping_dissipation,
-                               kinetic_energy + strain_energy +
-                                 damping_dissipation + fault_work -
-                                 external_work - initial_energy,
+                               energy.kinetic,
+                               energy.strain,
+                               energy.external_work,
+                               energy.damping_dissipation,
+                               energy.balance_error(),
                                test_mode ? 0. : MPI_Wtime() - wall_time_start};
     if (exact_displacement)
       row.push_back(compute_l2_error(state.time));
@@ -697,13 +687,13 @@ namespace rupture
                                f.seismic_moment,
                                mw,
                                f.frictional_energy,
-                               fault_work,
+                               energy.fault_work,
                                f.mean_normal_traction,
                                f.mean_shear_traction})
           row.push_back(v);
       }
     if (has_absorbing)
-      row.push_back(absorbed_energy);
+      row.push_back(energy.absorbed);
     // The friction state's range, after all others.
     for (unsigned int i = 0; i < f.state_minimum.size(); ++i)
       {

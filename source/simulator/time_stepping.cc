@@ -278,7 +278,7 @@ namespace rupture
     r -= tmp;
     compute_damping_force(state.velocity, tmp);
     r -= tmp;
-    r -= contact_force;
+    r -= energy.contact_force;
     increment_constraints.set_zero(r);
     if (use_lumped_mass)
       {
@@ -378,7 +378,7 @@ namespace rupture
     // (interpolate_initial_conditions()).
     VectorType load(locally_owned_dofs, communicator);
     assemble_load_vector(0, load);
-    contact_force = 0;
+    energy.contact_force = 0;
     if (fault && fault->uses_split_nodes())
       {
         // The fault traction that the initial state calls for: a prestress
@@ -388,10 +388,10 @@ namespace rupture
         r -= tmp;
         compute_damping_force(state.velocity, tmp);
         r -= tmp;
-        initial_split_node_force(r, contact_force);
+        initial_split_node_force(r, energy.contact_force);
       }
     else if (fault)
-      assemble_contact(contact_force, false, 1);
+      assemble_contact(energy.contact_force, false, 1);
 
     if (current_scheme() == TimeIntegration::Scheme::quasi_static)
       {
@@ -407,7 +407,7 @@ namespace rupture
     // Forces and energies of the initial state.
     VectorType ku(load);
     apply_stiffness(state.displacement, ku);
-    compute_damping_force(state.velocity, damping_force);
+    compute_damping_force(state.velocity, energy.damping_force);
     VectorType ma(load);
     ma = 0;
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
@@ -415,33 +415,34 @@ namespace rupture
     // The force the body is in balance with at the start. A quasi-static
     // run follows an equilibrium path, on which the loads grow from the
     // internal force K u_0 to their full value within the first step.
-    applied_force = load;
+    energy.applied_force = load;
     for (const auto i : locally_owned_dofs)
       if (hanging_constraints.is_constrained(i))
-        applied_force(i) = 0;
+        energy.applied_force(i) = 0;
       else if (increment_constraints.is_constrained(i) ||
                current_scheme() == TimeIntegration::Scheme::quasi_static)
-        applied_force(i) = ku(i) + ma(i) + damping_force(i) + contact_force(i);
-    applied_force.compress(VectorOperation::insert);
+        energy.applied_force(i) =
+          ku(i) + ma(i) + energy.damping_force(i) + energy.contact_force(i);
+    energy.applied_force.compress(VectorOperation::insert);
 
     hanging_constraints.set_zero(ku);
-    strain_energy = 0.5 * (state.displacement * ku);
+    energy.strain = 0.5 * (state.displacement * ku);
     VectorType mv(load);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(state.velocity, mv);
         hanging_constraints.set_zero(mv);
-        kinetic_energy = 0.5 * (state.velocity * mv);
+        energy.kinetic = 0.5 * (state.velocity * mv);
       }
-    external_work       = 0;
-    damping_dissipation = 0;
-    absorbed_energy     = 0;
+    energy.external_work       = 0;
+    energy.damping_dissipation = 0;
+    energy.absorbed            = 0;
     if (has_absorbing)
       {
-        absorbing_force.reinit(load);
-        compute_absorbing_force(state.velocity, absorbing_force);
+        energy.absorbing_force.reinit(load);
+        compute_absorbing_force(state.velocity, energy.absorbing_force);
       }
-    initial_energy = kinetic_energy + strain_energy;
+    energy.initial = energy.kinetic + energy.strain;
   }
 
 
@@ -470,11 +471,12 @@ namespace rupture
 
     VectorType increment(state.displacement);
     increment -= old_displacement;
-    external_work += 0.5 * ((force * increment) + (applied_force * increment));
-    damping_dissipation +=
-      0.5 * ((new_damping_force * increment) + (damping_force * increment));
-    applied_force = force;
-    damping_force = new_damping_force;
+    energy.external_work +=
+      0.5 * ((force * increment) + (energy.applied_force * increment));
+    energy.damping_dissipation += 0.5 * ((new_damping_force * increment) +
+                                         (energy.damping_force * increment));
+    energy.applied_force = force;
+    energy.damping_force = new_damping_force;
     if (has_absorbing &&
         current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
@@ -483,9 +485,9 @@ namespace rupture
         // instead, so this split is exact only to O(dt)).
         VectorType f(load);
         compute_absorbing_force(state.velocity, f);
-        absorbed_energy +=
-          0.5 * ((f * increment) + (absorbing_force * increment));
-        absorbing_force = f;
+        energy.absorbed +=
+          0.5 * ((f * increment) + (energy.absorbing_force * increment));
+        energy.absorbing_force = f;
       }
 
     VectorType tmp(load);
@@ -494,12 +496,12 @@ namespace rupture
     else
       apply_stiffness(state.displacement, tmp);
     hanging_constraints.set_zero(tmp);
-    strain_energy = 0.5 * (state.displacement * tmp);
+    energy.strain = 0.5 * (state.displacement * tmp);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(state.velocity, tmp);
         hanging_constraints.set_zero(tmp);
-        kinetic_energy = 0.5 * (state.velocity * tmp);
+        energy.kinetic = 0.5 * (state.velocity * tmp);
       }
   }
 
@@ -547,8 +549,9 @@ namespace rupture
         assemble_contact(force, false, 1);
         VectorType increment(state.displacement);
         increment -= old_u;
-        fault_work += 0.5 * ((force * increment) + (contact_force * increment));
-        contact_force = force;
+        energy.fault_work +=
+          0.5 * ((force * increment) + (energy.contact_force * increment));
+        energy.contact_force = force;
         fault->commit(state.time_step, state.time);
       }
     update_energy(old_u, load, residual, new_damping_force);

@@ -179,11 +179,11 @@ namespace rupture
           s.fault_zone->vmult_add(eta, s.state.velocity, zone_force);
           zone = local(zone_force);
         }
-      double *const applied = local(s.applied_force);
-      double *const damping = local(s.damping_force);
+      double *const applied = local(s.energy.applied_force);
+      double *const damping = local(s.energy.damping_force);
       double *const absorbing =
-        s.has_absorbing ? local(s.absorbing_force) : nullptr;
-      double *const contact = local(s.contact_force);
+        s.has_absorbing ? local(s.energy.absorbing_force) : nullptr;
+      double *const contact = local(s.energy.contact_force);
       // work of the loads, damping, absorbing boundaries, fault; strain and
       // kinetic energy (the fault's work at its entries only, where its
       // force is nonzero, in the same order)
@@ -222,12 +222,12 @@ namespace rupture
       dealii::Utilities::MPI::sum(ArrayView<const double>(sums, 6),
                                   s.communicator,
                                   ArrayView<double>(sums, 6));
-      s.external_work += 0.5 * sums[0];
-      s.damping_dissipation += 0.5 * sums[1];
-      s.absorbed_energy += 0.5 * sums[2];
-      s.fault_work += 0.5 * sums[3];
-      s.strain_energy  = 0.5 * sums[4];
-      s.kinetic_energy = 0.5 * sums[5];
+      s.energy.external_work += 0.5 * sums[0];
+      s.energy.damping_dissipation += 0.5 * sums[1];
+      s.energy.absorbed += 0.5 * sums[2];
+      s.energy.fault_work += 0.5 * sums[3];
+      s.energy.strain  = 0.5 * sums[4];
+      s.energy.kinetic = 0.5 * sums[5];
       if (s.fault)
         s.fault->commit(dt, s.state.time);
     }

@@ -18,6 +18,7 @@
 #include <rupture/scene/scene.h>
 #include <rupture/simulator/termination.h>
 #include <rupture/solver/linear_solver.h>
+#include <rupture/time_integration/energy_budget.h>
 #include <rupture/time_integration/interface.h>
 #include <rupture/time_integration/newmark.h>
 #include <rupture/time_integration/time_state.h>
@@ -582,28 +583,9 @@ namespace rupture
     void
            write_summary(const std::string &status, const std::string &message);
     double stable_time_step;
-    /// Total force applied to the body at the current time (loads plus
-    /// reactions on kinematic boundaries) and damping force, for the energy
-    /// budget.
-    VectorType applied_force;
-    VectorType damping_force;
-    /// Contact forces of the fault at the current state.
-    VectorType contact_force;
-
-    // Energy budget (J) and per-step counters. The balance is
-    // kinetic + strain + dissipated - work - initial energy.
-    double initial_energy;
-    double kinetic_energy;
-    double strain_energy;
-    double external_work;
-    double damping_dissipation;
-    /// The part of damping_dissipation that left through the absorbing
-    /// boundaries, and their force at the end of the last step.
-    double     absorbed_energy;
-    VectorType absorbing_force;
-    /// Work done on the fault: penalty spring energy plus friction (J).
-    double       fault_work;
-    unsigned int last_linear_iterations;
+    /// The energy budget and the forces of its trapezoidal rule.
+    TimeIntegration::EnergyBudget energy;
+    unsigned int                  last_linear_iterations;
     /// Krylov iterations and linear solves of the run, per phase
     /// (quasi-static, dynamic).
     std::array<unsigned long, 2> total_linear_iterations = {{0, 0}};

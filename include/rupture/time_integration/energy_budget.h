@@ -1,0 +1,59 @@
+#ifndef rupture_time_integration_energy_budget_h
+#define rupture_time_integration_energy_budget_h
+
+#include <deal.II/lac/trilinos_vector.h>
+
+namespace rupture
+{
+  namespace TimeIntegration
+  {
+    /**
+     * The energy budget of a run (J): the energies of the body at the
+     * current time and the work and dissipation accumulated since its
+     * start, with the forces at the end of the last step that the
+     * trapezoidal rule of the next step needs. It closes when
+     * balance_error() vanishes: kinetic + strain + dissipated + fault work
+     * - external work - initial energy = 0 (to round-off for the implicit
+     * and quasi-static schemes, to O(dt^2) for central differences).
+     */
+    struct EnergyBudget
+    {
+      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+      /// Kinetic plus strain energy of the initial state.
+      double initial = 0;
+      double kinetic = 0;
+      double strain  = 0;
+      /// Work of the loads and of the reactions on kinematic boundaries.
+      double external_work = 0;
+      /// Energy dissipated by damping (Rayleigh, the fault zone's, the
+      /// absorbing boundaries').
+      double damping_dissipation = 0;
+      /// The part of damping_dissipation that left through the absorbing
+      /// boundaries.
+      double absorbed = 0;
+      /// Work done on the fault: penalty spring energy plus friction.
+      double fault_work = 0;
+
+      /// Total force applied to the body at the current time (loads plus
+      /// reactions on kinematic boundaries).
+      VectorType applied_force;
+      /// Damping force at the current velocity.
+      VectorType damping_force;
+      /// Contact forces of the fault at the current state.
+      VectorType contact_force;
+      /// The force of the absorbing boundaries at the end of the last step.
+      VectorType absorbing_force;
+
+      /// What the budget misses: zero when energy is conserved.
+      double
+      balance_error() const
+      {
+        return kinetic + strain + damping_dissipation + fault_work -
+               external_work - initial;
+      }
+    };
+  } // namespace TimeIntegration
+} // namespace rupture
+
+#endif
