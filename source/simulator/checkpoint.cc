@@ -257,8 +257,8 @@ namespace rupture
                               next_output_time,
                               next_fault_output_time,
                               peak_slip_rate,
-                              double(last_linear_iterations),
-                              double(last_newton_iterations),
+                              double(newton.last_linear_iterations),
+                              double(newton.last_iterations),
                               state.clock.phase_start_time,
                               double(state.clock.steps_in_phase)});
         statistics.save(out);
@@ -332,26 +332,26 @@ namespace rupture
     for (VectorType *v : fields)
       distribute_hanging(*v);
 
-    state.time                   = s[4];
-    state.clock.phase_time       = s[5];
-    state.step                   = static_cast<unsigned int>(s[6]);
-    state.clock.dynamic_start    = s[7];
-    state.clock.in_dynamic_phase = s[8] != 0;
-    state.time_step              = s[9];
-    energy.initial               = s[10];
-    energy.kinetic               = s[11];
-    energy.strain                = s[12];
-    energy.external_work         = s[13];
-    energy.damping_dissipation   = s[14];
-    energy.absorbed              = s[15];
-    energy.fault_work            = s[16];
-    next_output_time             = s[17];
-    next_fault_output_time       = s[18];
-    peak_slip_rate               = s[19];
-    last_linear_iterations       = static_cast<unsigned int>(s[20]);
-    last_newton_iterations       = static_cast<unsigned int>(s[21]);
-    state.clock.phase_start_time = s[22];
-    state.clock.steps_in_phase   = static_cast<unsigned int>(s[23]);
+    state.time                    = s[4];
+    state.clock.phase_time        = s[5];
+    state.step                    = static_cast<unsigned int>(s[6]);
+    state.clock.dynamic_start     = s[7];
+    state.clock.in_dynamic_phase  = s[8] != 0;
+    state.time_step               = s[9];
+    energy.initial                = s[10];
+    energy.kinetic                = s[11];
+    energy.strain                 = s[12];
+    energy.external_work          = s[13];
+    energy.damping_dissipation    = s[14];
+    energy.absorbed               = s[15];
+    energy.fault_work             = s[16];
+    next_output_time              = s[17];
+    next_fault_output_time        = s[18];
+    peak_slip_rate                = s[19];
+    newton.last_linear_iterations = static_cast<unsigned int>(s[20]);
+    newton.last_iterations        = static_cast<unsigned int>(s[21]);
+    state.clock.phase_start_time  = s[22];
+    state.clock.steps_in_phase    = static_cast<unsigned int>(s[23]);
 
     statistics.load(in);
     volume_output->load(in);

@@ -109,12 +109,12 @@ namespace rupture
     double        increment_ratio    = 0;
     unsigned long last_signature     = 0;
     unsigned int  linear_iterations  = 0;
-    last_linear_iterations           = 0;
-    stick_crossings_limited          = 0;
+    newton.last_linear_iterations    = 0;
+    newton.stick_crossings_limited   = 0;
     std::vector<double>        norms;
     std::vector<unsigned long> signatures;
     // The inexact Newton forcing term (<Solver/Newton forcing>).
-    double eta       = newton_forcing;
+    double eta       = newton_parameters.forcing;
     double last_norm = 0;
     // The line search leaves the residual of the new iterate behind.
     bool residual_current = false;
@@ -173,7 +173,7 @@ namespace rupture
                   return scratch.l2_norm();
                 }();
                 const bool force_ok =
-                  norm <= newton_force_tolerance * reference;
+                  norm <= newton_parameters.force_tolerance * reference;
                 // A step that changes the displacement very little (the
                 // first dynamic steps after a long loading phase: 1e-11 m
                 // on a field of metres; a fault creeping at 1e-20 m/s)
@@ -186,7 +186,8 @@ namespace rupture
                   std::max(state.displacement.l2_norm(), displacement_scale);
                 const bool displacement_ok =
                   increment_norm <=
-                  std::max(newton_displacement_tolerance * change, round_off);
+                  std::max(newton_parameters.displacement_tolerance * change,
+                           round_off);
                 increment_ratio   = increment_norm / std::max(change, 1e-300);
                 const bool linear = (signature == last_signature) && stuck;
                 if (force_ok && (displacement_ok || linear))
@@ -200,12 +201,12 @@ namespace rupture
             // last level of cuts).
             norms.push_back(norm);
             signatures.push_back(signature);
-            const unsigned int window = newton_stall_iterations;
+            const unsigned int window = newton_parameters.stall_iterations;
             const bool         stalled =
-              newton_may_cut && (window > 0) && (norms.size() > window) &&
+              newton.may_cut && (window > 0) && (norms.size() > window) &&
               (*std::min_element(norms.end() - window, norms.end()) >
                0.5 * *std::min_element(norms.begin(), norms.end() - window));
-            if (k == max_newton_iterations || stalled)
+            if (k == newton_parameters.max_iterations || stalled)
               {
                 const Fault::Statistics f = fault->statistics();
                 std::ostringstream      message;
@@ -223,21 +224,21 @@ namespace rupture
                     message << "the force residual stalled at "
                             << norm / reference
                             << " of its first value (wanted "
-                            << newton_force_tolerance
+                            << newton_parameters.force_tolerance
                             << ") and did not halve in the last " << window
                             << " iterations, which went through " << patterns
                             << " different patterns of stick, slip and open "
                                "fault nodes";
                   }
                 else
-                  message << "within " << max_newton_iterations
+                  message << "within " << newton_parameters.max_iterations
                           << " iterations the force residual fell to "
                           << norm / reference << " of its first value (wanted "
-                          << newton_force_tolerance << ")";
-                if (norm <= newton_force_tolerance * reference)
+                          << newton_parameters.force_tolerance << ")";
+                if (norm <= newton_parameters.force_tolerance * reference)
                   message << ", but the last correction was " << increment_ratio
                           << " of the step's displacement change (wanted "
-                          << newton_displacement_tolerance
+                          << newton_parameters.displacement_tolerance
                           << ", or below 1e-11 of the whole displacement or of "
                              "the displacement of the step's forces)";
                 message << "; " << f.n_slipping << " slipping and " << f.n_open
@@ -298,7 +299,7 @@ namespace rupture
             // current tangent and the last preconditioner (with the fault
             // pair transform it holds its own copy of the matrix).
             const unsigned long signature = fault->status_signature();
-            if (k == 0 || signature != preconditioner_signature ||
+            if (k == 0 || signature != newton.preconditioner_signature ||
                 !linear_solver.keeps_own_matrix())
               {
                 TimerOutput::Scope t(timer, "Preconditioner set-up");
@@ -306,26 +307,26 @@ namespace rupture
                                          null_space,
                                          false,
                                          fe_degree > 1);
-                preconditioner_signature = signature;
+                newton.preconditioner_signature = signature;
               }
           }
         // Where every fault node sticks the step is linear and one exact
         // solve (tolerance 0: <Linear solver tolerance>) ends it.
         const double linear_tolerance =
-          (fault && linear_solver.matrix_free() && newton_forcing > 0 &&
-           !stuck) ?
+          (fault && linear_solver.matrix_free() &&
+           newton_parameters.forcing > 0 && !stuck) ?
             forcing_tolerance(k,
                               norm,
                               last_norm,
-                              newton_force_tolerance * reference,
+                              newton_parameters.force_tolerance * reference,
                               // Multigrid meets a loose tolerance in one
                               // or two iterations, with directions that
                               // lead Newton astray at contact (the 10 km
                               // Northeast-Japan loading: no convergence
                               // at 0.1, 6 iterations at 1e-3).
                               use_multigrid_now() ?
-                                std::min(newton_forcing, 1e-3) :
-                                newton_forcing,
+                                std::min(newton_parameters.forcing, 1e-3) :
+                                newton_parameters.forcing,
                               eta) :
             0.;
         last_norm = norm;
@@ -370,13 +371,13 @@ namespace rupture
           else
             linear_iterations =
               linear_solver.solve(system_matrix, increment, free_residual);
-          last_linear_iterations += linear_iterations;
+          newton.last_linear_iterations += linear_iterations;
           {
             const unsigned int p =
               (current_scheme() == TimeIntegration::Scheme::quasi_static) ? 0 :
                                                                             1;
-            total_linear_iterations[p] += linear_iterations;
-            ++n_linear_solves[p];
+            newton.total_linear_iterations[p] += linear_iterations;
+            ++newton.n_linear_solves[p];
           }
         }
         if (fault && !linear_solver.matrix_free())
@@ -388,13 +389,14 @@ namespace rupture
         // Nodes that would jump across the stick region stop inside it
         // (Fault::limit_stick_crossings()).
         unsigned int n_limited = 0;
-        if (fault && limit_stick_crossings && !stick_crossing_limit_suspended)
+        if (fault && newton_parameters.limit_stick_crossings &&
+            !newton.stick_crossing_limit_suspended)
           {
             scratch   = 0;
             n_limited = fault->limit_stick_crossings(ghosted_copy(1, increment),
                                                      increment_constraints,
                                                      scratch);
-            stick_crossings_limited += n_limited;
+            newton.stick_crossings_limited += n_limited;
             if (n_limited > 0)
               {
                 increment += scratch;
@@ -426,7 +428,7 @@ namespace rupture
               }
             increment *= alpha;
             residual_current = true;
-            if (print_newton_iterations)
+            if (newton_parameters.print_iterations)
               {
                 const Fault::Statistics f = fault->statistics();
                 pcout << "      Newton " << k << ": residual "
@@ -436,7 +438,8 @@ namespace rupture
                       << linear_solver.last_relative_residual()
                       << ", factorisations " << linear_solver.n_factorizations()
                       << ", line search " << alpha;
-                if (limit_stick_crossings && !stick_crossing_limit_suspended)
+                if (newton_parameters.limit_stick_crossings &&
+                    !newton.stick_crossing_limit_suspended)
                   pcout << ", " << n_limited << " limited";
                 pcout << ", " << f.n_slipping << " slipping, " << f.n_open
                       << " open, pattern " << std::hex
@@ -446,7 +449,7 @@ namespace rupture
         else
           state.displacement += increment;
         increment_norm         = increment.l2_norm();
-        last_newton_iterations = k + 1;
+        newton.last_iterations = k + 1;
       }
     check_finite(state.displacement, "displacement");
   }

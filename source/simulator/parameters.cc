@@ -477,16 +477,21 @@ namespace rupture
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    newton_force_tolerance = prm.get_double("Newton force tolerance");
-    newton_displacement_tolerance =
+    newton_parameters.force_tolerance =
+      prm.get_double("Newton force tolerance");
+    newton_parameters.displacement_tolerance =
       prm.get_double("Newton displacement tolerance");
-    max_newton_iterations   = prm.get_integer("Maximum Newton iterations");
-    max_step_cuts           = prm.get_integer("Maximum step cuts");
-    newton_stall_iterations = prm.get_integer("Newton stall iterations");
-    newton_forcing          = prm.get_double("Newton forcing");
-    print_newton_iterations = prm.get_bool("Print Newton iterations");
-    newton_predictor        = prm.get("Newton predictor");
-    limit_stick_crossings   = prm.get_bool("Limit stick crossings");
+    newton_parameters.max_iterations =
+      prm.get_integer("Maximum Newton iterations");
+    newton_parameters.max_step_cuts = prm.get_integer("Maximum step cuts");
+    newton_parameters.stall_iterations =
+      prm.get_integer("Newton stall iterations");
+    newton_parameters.forcing = prm.get_double("Newton forcing");
+    newton_parameters.print_iterations =
+      prm.get_bool("Print Newton iterations");
+    newton_parameters.predictor = prm.get("Newton predictor");
+    newton_parameters.limit_stick_crossings =
+      prm.get_bool("Limit stick crossings");
     prm.leave_subsection();
 
     time_parameters.parse_parameters(prm);

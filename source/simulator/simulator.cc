@@ -38,8 +38,6 @@ namespace rupture
     , n_sides(1)
     , has_absorbing(false)
     , stable_time_step(0)
-    , last_linear_iterations(0)
-    , last_newton_iterations(0)
     , wall_time_start(0)
     , next_output_time(0)
   {
@@ -448,9 +446,10 @@ namespace rupture
         pcout << "   Krylov iterations per linear solve:";
         const char *names[] = {"quasi-static", "dynamic"};
         for (unsigned int p = 0; p < 2; ++p)
-          if (n_linear_solves[p] > 0)
+          if (newton.n_linear_solves[p] > 0)
             pcout << " " << std::fixed << std::setprecision(1)
-                  << double(total_linear_iterations[p]) / n_linear_solves[p]
+                  << double(newton.total_linear_iterations[p]) /
+                       newton.n_linear_solves[p]
                   << " (" << names[p] << ", "
                   << (p == 0 || linear_solver.multigrid_in_dynamic_steps() ?
                         "multigrid" :
@@ -567,7 +566,7 @@ namespace rupture
                 const Fault::Statistics f = fault->statistics();
                 pcout << "\n    ";
                 if (!fault->uses_split_nodes())
-                  pcout << "Newton: " << last_newton_iterations
+                  pcout << "Newton: " << newton.last_iterations
                         << " iterations; ";
                 pcout << "fault: " << f.n_slipping << " slipping, " << f.n_open
                       << " open nodes, max slip " << std::setprecision(3)
@@ -583,8 +582,8 @@ namespace rupture
                       << left << " s left]";
                 if (current_scheme() !=
                     TimeIntegration::Scheme::explicit_central_difference)
-                  pcout << "\n    Linear solver: " << last_linear_iterations
-                        << " iterations";
+                  pcout << "\n    Linear solver: "
+                        << newton.last_linear_iterations << " iterations";
               }
             pcout << std::defaultfloat << std::endl;
           }
@@ -661,7 +660,8 @@ namespace rupture
     std::vector<double> row = {static_cast<double>(state.step),
                                state.clock.phase_time,
                                state.time_step,
-                               static_cast<double>(last_linear_iterations),
+                               static_cast<double>(
+                                 newton.last_linear_iterations),
                                energy.kinetic,
                                energy.strain,
                                energy.external_work,
@@ -678,7 +678,7 @@ namespace rupture
         const double mw = (dim == 3 && f.seismic_moment > 0) ?
                             2. / 3. * (std::log10(f.seismic_moment) - 9.1) :
                             0.;
-        for (const double v : {static_cast<double>(last_newton_iterations),
+        for (const double v : {static_cast<double>(newton.last_iterations),
                                static_cast<double>(f.n_slipping),
                                static_cast<double>(f.n_open),
                                f.slipping_area,

@@ -98,7 +98,7 @@ namespace rupture
       using NewtonFailure    = typename Simulator<dim>::NewtonFailure;
       Simulator<dim>    &s   = simulator;
       const double       end = s.state.time, dt = s.state.time_step;
-      const unsigned int cuts    = s.max_step_cuts;
+      const unsigned int cuts    = s.newton_parameters.max_step_cuts;
       unsigned int       deepest = 0;
       bool               cut     = false;
       std::function<void(double, double, unsigned int)> attempt =
@@ -112,7 +112,7 @@ namespace rupture
             s.fault->set_time(s.state.time);
           // Give up early on a stalled Newton iteration only where the
           // step can still be cut; at the last level it iterates on.
-          s.newton_may_cut = (depth < cuts);
+          s.newton.may_cut = (depth < cuts);
           try
             {
               try
@@ -125,7 +125,7 @@ namespace rupture
                   // side of its stick region where its solution lies (seen
                   // with time steps 100-1000 times the explicit limit): try
                   // the step once more without it before cutting it.
-                  if (s.stick_crossings_limited == 0)
+                  if (s.newton.stick_crossings_limited == 0)
                     throw;
                   s.state.displacement = u;
                   s.state.velocity     = v;
@@ -136,17 +136,17 @@ namespace rupture
                              "tried again without the limit\n";
                   // (If it fails again, the catch below ends the
                   // suspension.)
-                  s.stick_crossing_limit_suspended = true;
+                  s.newton.stick_crossing_limit_suspended = true;
                   substep();
-                  s.stick_crossing_limit_suspended = false;
+                  s.newton.stick_crossing_limit_suspended = false;
                 }
-              s.newton_may_cut = false;
+              s.newton.may_cut = false;
               deepest          = std::max(deepest, depth);
             }
           catch (const NewtonFailure &failure)
             {
-              s.newton_may_cut                 = false;
-              s.stick_crossing_limit_suspended = false;
+              s.newton.may_cut                        = false;
+              s.newton.stick_crossing_limit_suspended = false;
               if (depth == cuts)
                 throw NewtonFailure(std::string(failure.what()) +
                                       " The step was cut " +
@@ -158,7 +158,7 @@ namespace rupture
               s.state.acceleration = a;
               s.pcout << "    Newton failed with dt = " << h << " s ("
                       << failure.reason << "): the step is cut in half\n";
-              ++s.n_step_cuts;
+              ++s.newton.n_step_cuts;
               cut = true;
               attempt(t_start, h / 2, depth + 1);
               attempt(t_start + h / 2, h / 2, depth + 1);
@@ -237,11 +237,11 @@ namespace rupture
 
       // The predictor: the old motion carried on over the step.
       std::unique_ptr<VectorType> predicted;
-      if (s.newton_predictor != "old displacement")
+      if (s.newton_parameters.predictor != "old displacement")
         {
           predicted = std::make_unique<VectorType>(old_v);
           *predicted *= dt;
-          if (s.newton_predictor == "constant acceleration")
+          if (s.newton_parameters.predictor == "constant acceleration")
             predicted->add(0.5 * dt * dt, old_a);
         }
       s.solve_step(

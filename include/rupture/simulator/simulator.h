@@ -18,6 +18,7 @@
 #include <rupture/scene/scene.h>
 #include <rupture/simulator/termination.h>
 #include <rupture/solver/linear_solver.h>
+#include <rupture/solver/newton.h>
 #include <rupture/time_integration/energy_budget.h>
 #include <rupture/time_integration/interface.h>
 #include <rupture/time_integration/newmark.h>
@@ -301,16 +302,7 @@ namespace rupture
     // --- time stepping (time_stepping.cc) ---
     void
     initialize_state();
-    /// Newton's method did not converge (the step may be cut).
-    struct NewtonFailure : public std::runtime_error
-    {
-      NewtonFailure(const std::string &message, const std::string &reason = "")
-        : std::runtime_error(message)
-        , reason(reason)
-      {}
-      /// A few words for the screen when the step is cut.
-      std::string reason;
-    };
+    using NewtonFailure = Solver::NewtonFailure;
     /// The load vector at @p time: the constant part, plus the body force
     /// if there is one.
     const VectorType &
@@ -585,36 +577,13 @@ namespace rupture
     double stable_time_step;
     /// The energy budget and the forces of its trapezoidal rule.
     TimeIntegration::EnergyBudget energy;
-    unsigned int                  last_linear_iterations;
-    /// Krylov iterations and linear solves of the run, per phase
-    /// (quasi-static, dynamic).
-    std::array<unsigned long, 2> total_linear_iterations = {{0, 0}};
-    std::array<unsigned long, 2> n_linear_solves         = {{0, 0}};
     /// Whether prepare_output_directory() has run (only then may the
     /// destructor write the statistics of a failed run).
     bool output_prepared = false;
-    /// Fault status for which the preconditioner was last built.
-    unsigned long preconditioner_signature = 0;
-    unsigned int  last_newton_iterations;
-    double        newton_force_tolerance;
-    double        newton_displacement_tolerance;
-    unsigned int  max_newton_iterations;
-    unsigned int  max_step_cuts;
-    unsigned int  n_step_cuts = 0;
-    unsigned int  newton_stall_iterations;
-    double        newton_forcing;
-    /// Whether a stalled Newton iteration may give up (the step can be cut).
-    bool newton_may_cut = false;
-    bool print_newton_iterations;
-    /// <Solver/Newton predictor> of implicit dynamic steps.
-    std::string newton_predictor;
-    /// <Solver/Limit stick crossings>.
-    bool limit_stick_crossings = true;
-    /// Stick crossings limited in the current (or last) Newton solve.
-    unsigned int stick_crossings_limited = 0;
-    /// True while a step is retried without the limit.
-    bool   stick_crossing_limit_suspended = false;
-    double wall_time_start;
+    /// Newton's controls and what it reports.
+    Solver::NewtonParameters newton_parameters;
+    Solver::NewtonStatus     newton;
+    double                   wall_time_start;
     /// Wall time spent in the time loops (s), and their number of steps.
     double time_loop_seconds = 0;
     /// Resident memory (bytes, all ranks) after each set-up stage.
