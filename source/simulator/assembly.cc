@@ -1,3 +1,4 @@
+#include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/base/partitioner.h>
@@ -353,8 +354,27 @@ namespace rupture
       }
     state.time_step = duration / n_steps_of_phase(duration, state.time_step);
 
-    integrator = TimeIntegration::create(scheme, *this);
+    integrator = TimeIntegration::create(scheme, integrator_context());
     integrator->prepare();
+  }
+
+
+
+  template <int dim>
+  TimeIntegration::Context<dim>
+  Simulator<dim>::integrator_context()
+  {
+    return {state,
+            energy,
+            time_parameters,
+            *services,
+            *services,
+            *services,
+            fault.get(),
+            newton,
+            newton_parameters,
+            timer,
+            pcout};
   }
 
 

@@ -1,6 +1,7 @@
 #include <rupture/base/interruption.h>
 #include <rupture/base/time_units.h>
 #include <rupture/base/utilities.h>
+#include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/base/index_set.h>
@@ -41,6 +42,7 @@ namespace rupture
     , wall_time_start(0)
     , next_output_time(0)
   {
+    services     = std::make_unique<Services>(*this);
     this->resume = resume;
     parse_parameters(prm);
     if (resume)

@@ -449,66 +449,6 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::update_energy(const VectorType &old_displacement,
-                                const VectorType &load,
-                                const VectorType &residual,
-                                const VectorType &new_damping_force,
-                                const VectorType *stiffness_force)
-  {
-    // Work of the applied forces by the trapezoidal rule: loads on free
-    // DoFs, reactions (load minus residual) on kinematically held ones. On
-    // free DoFs the residual is the error of the solve, which thus shows up
-    // in the energy balance instead of being hidden.
-    // DoFs tied to others (hanging nodes, welded fault nodes) carry no
-    // force of their own: their rows of K and M hold only a placeholder
-    // diagonal, so they are left out of every energy.
-    VectorType force(load);
-    for (const auto i : locally_owned_dofs)
-      if (increment_constraints.is_constrained(i) &&
-          !hanging_constraints.is_constrained(i))
-        force(i) = load(i) - residual(i);
-    force.compress(VectorOperation::insert);
-
-    VectorType increment(state.displacement);
-    increment -= old_displacement;
-    energy.external_work +=
-      0.5 * ((force * increment) + (energy.applied_force * increment));
-    energy.damping_dissipation += 0.5 * ((new_damping_force * increment) +
-                                         (energy.damping_force * increment));
-    energy.applied_force = force;
-    energy.damping_force = new_damping_force;
-    if (has_absorbing &&
-        current_scheme() != TimeIntegration::Scheme::quasi_static)
-      {
-        // The dashpots' share, from the velocities at the ends of the step
-        // (the schemes' damping force may use a predicted velocity
-        // instead, so this split is exact only to O(dt)).
-        VectorType f(load);
-        compute_absorbing_force(state.velocity, f);
-        energy.absorbed +=
-          0.5 * ((f * increment) + (energy.absorbing_force * increment));
-        energy.absorbing_force = f;
-      }
-
-    VectorType tmp(load);
-    if (stiffness_force)
-      tmp = *stiffness_force;
-    else
-      apply_stiffness(state.displacement, tmp);
-    hanging_constraints.set_zero(tmp);
-    energy.strain = 0.5 * (state.displacement * tmp);
-    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
-      {
-        apply_mass(state.velocity, tmp);
-        hanging_constraints.set_zero(tmp);
-        energy.kinetic = 0.5 * (state.velocity * tmp);
-      }
-  }
-
-
-
-  template <int dim>
-  void
   Simulator<dim>::initial_split_node_force(const VectorType &residual,
                                            VectorType       &force)
   {
@@ -529,32 +469,6 @@ namespace rupture
                                state.time_step,
                                time_parameters.gamma,
                                force);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::finish_step(const VectorType &old_u,
-                              const VectorType &load,
-                              const VectorType &residual,
-                              const VectorType &new_damping_force)
-  {
-    if (fault)
-      {
-        // The contact forces of the converged state, for the work done on
-        // the fault, and the accepted fault state.
-        VectorType force(state.displacement);
-        force = 0;
-        assemble_contact(force, false, 1);
-        VectorType increment(state.displacement);
-        increment -= old_u;
-        energy.fault_work +=
-          0.5 * ((force * increment) + (energy.contact_force * increment));
-        energy.contact_force = force;
-        fault->commit(state.time_step, state.time);
-      }
-    update_energy(old_u, load, residual, new_damping_force);
   }
 
 

@@ -1,4 +1,4 @@
-#include <rupture/simulator/simulator.h>
+#include <rupture/fault/fault.h>
 #include <rupture/time_integration/central_difference.h>
 
 #include <cmath>
@@ -21,7 +21,15 @@ namespace rupture
     void
     CentralDifference<dim>::prepare()
     {
-      Simulator<dim> &s = simulator;
+      Context<dim>     &s                 = this->context;
+      const IndexSet   &owned_dofs        = s.kinematics.owned_dofs();
+      const VectorType &lumped_mass       = s.system.lumped_mass();
+      const VectorType *absorbing_damping = s.system.absorbing_damping();
+      const double      rayleigh_alpha    = s.system.rayleigh_alpha();
+      const AffineConstraints<double> &hanging_constraints =
+        s.kinematics.hanging_constraints();
+      const AffineConstraints<double> &increment_constraints =
+        s.kinematics.increment_constraints();
       // (M (1 + gamma dt alpha) + gamma dt C_abs) a = r is diagonal.
       const double g = s.time_parameters.gamma * s.state.time_step;
       for (VectorType *v : {&inverse_diagonal,
@@ -30,29 +38,29 @@ namespace rupture
                             &residual,
                             &fault_force,
                             &zone_force})
-        v->reinit(s.locally_owned_dofs, s.communicator);
-      dof_kind.assign(s.locally_owned_dofs.n_elements(), DofKind::free);
+        v->reinit(owned_dofs, s.kinematics.communicator());
+      dof_kind.assign(owned_dofs.n_elements(), DofKind::free);
       unsigned int k = 0;
-      for (const auto i : s.locally_owned_dofs)
+      for (const auto i : owned_dofs)
         {
-          double d = s.lumped_mass(i) * (1 + g * s.rayleigh_alpha);
-          if (s.has_absorbing)
-            d += g * s.absorbing_damping(i);
+          double d = lumped_mass(i) * (1 + g * rayleigh_alpha);
+          if (absorbing_damping)
+            d += g * (*absorbing_damping)(i);
           inverse_diagonal(i) =
-            (s.increment_constraints.is_constrained(i) || d == 0) ? 0. : 1. / d;
-          if (s.hanging_constraints.is_constrained(i))
+            (increment_constraints.is_constrained(i) || d == 0) ? 0. : 1. / d;
+          if (hanging_constraints.is_constrained(i))
             dof_kind[k] = DofKind::tied;
-          else if (s.increment_constraints.is_constrained(i))
+          else if (increment_constraints.is_constrained(i))
             dof_kind[k] = DofKind::kinematic;
           ++k;
         }
       inverse_diagonal.compress(VectorOperation::insert);
       AssertThrow(std::isfinite(inverse_diagonal.l2_norm()) &&
-                    std::isfinite(1 + g * s.rayleigh_alpha),
+                    std::isfinite(1 + g * rayleigh_alpha),
                   ExcMessage("The diagonal M (1 + gamma dt alpha) + gamma dt "
                              "C_absorbing of the explicit step is not finite "
                              "with <Damping/Rayleigh alpha> = " +
-                             std::to_string(s.rayleigh_alpha) +
+                             std::to_string(rayleigh_alpha) +
                              " 1/s and the time step " +
                              std::to_string(s.state.time_step) +
                              " s. Allowed: a finite product of the two (a few "
@@ -71,14 +79,14 @@ namespace rupture
     void
     CentralDifference<dim>::step()
     {
-      Simulator<dim>    &s = simulator;
+      Context<dim>      &s = this->context;
       TimerOutput::Scope t(s.timer, "Explicit step");
       const double       gamma = s.time_parameters.gamma;
       const double       dt    = s.state.time_step;
-      const double       alpha = s.rayleigh_alpha;
-      const double       beta  = s.rayleigh_beta;
-      const double       eta   = s.fault_zone_viscosity();
-      const VectorType  &load  = s.current_load(s.state.time);
+      const double       alpha = s.system.rayleigh_alpha();
+      const double       beta  = s.system.rayleigh_beta();
+      const double       eta   = s.system.fault_zone_viscosity();
+      const VectorType  &load  = s.system.load(s.state.time);
       const unsigned int n     = dof_kind.size();
 
       // The owned arrays: every update below is one fused pass over them.
@@ -90,9 +98,10 @@ namespace rupture
                     *const a  = local(s.state.acceleration),
                     *const u0 = local(old_displacement),
                     *const r = local(residual), *const ff = local(fault_force);
-      const double *const m = local(s.lumped_mass);
+      const double *const m                 = local(s.system.lumped_mass());
+      const VectorType   *absorbing_damping = s.system.absorbing_damping();
       const double *const c_abs =
-        s.has_absorbing ? local(s.absorbing_damping) : nullptr;
+        absorbing_damping ? local(*absorbing_damping) : nullptr;
       const double *const f     = local(load);
       const double *const inv_d = local(inverse_diagonal);
 
@@ -103,31 +112,30 @@ namespace rupture
           u[i] += dt * v[i] + 0.5 * dt * dt * a[i];
           v[i] += (1 - gamma) * dt * a[i];
         }
-      for (const auto &k : s.kinematic_dofs)
-        s.state.displacement(k.dof) =
-          old_displacement(k.dof) +
-          s.kinematic_velocity(k, s.state.time - 0.5 * dt) * dt;
-      s.state.displacement.compress(VectorOperation::insert);
-      s.set_kinematic_velocity(s.state.velocity);
-      s.distribute_hanging(s.state.displacement);
+      s.kinematics.impose_kinematic_motion(old_displacement,
+                                           s.state.displacement,
+                                           s.state.time,
+                                           dt);
+      s.kinematics.set_kinematic_velocity(s.state.velocity, s.state.time);
+      s.kinematics.distribute_hanging(s.state.displacement);
 
       // (M (1 + gamma dt alpha) + gamma dt C_abs) a = f - K (u + beta v~)
       //   - eta K_zone v~ - alpha M v~ - C_abs v~ - F_fault; the stiffness
       //   damping uses the predictor.
       // Without stiffness damping K u is read where the matrix-free
       // operator left it (no copy).
-      const double *ku = (beta == 0) ?
-                           s.apply_stiffness_in_place(s.state.displacement) :
-                           nullptr;
+      const double *ku =
+        (beta == 0) ? s.system.apply_stiffness_in_place(s.state.displacement) :
+                      nullptr;
       if (!ku)
         {
           if (beta == 0)
-            s.apply_stiffness(s.state.displacement, stiffness_force);
+            s.system.apply_stiffness(s.state.displacement, stiffness_force);
           else
             {
               residual = s.state.displacement;
               residual.add(beta, s.state.velocity);
-              s.apply_stiffness(residual, stiffness_force);
+              s.system.apply_stiffness(residual, stiffness_force);
             }
           ku = local(stiffness_force);
         }
@@ -135,7 +143,7 @@ namespace rupture
         r[i] =
           f[i] - ku[i] - alpha * m[i] * v[i] - (c_abs ? c_abs[i] * v[i] : 0.);
       if (eta != 0)
-        s.fault_zone->vmult_add(-eta, s.state.velocity, residual);
+        s.system.add_fault_zone_force(-eta, s.state.velocity, residual);
       // The fault's force, nonzero only at its entries: r - F_fault there.
       if (s.fault)
         {
@@ -159,16 +167,16 @@ namespace rupture
           a[i] = r[i] * inv_d[i];
           v[i] += gamma * dt * a[i];
         }
-      s.distribute_hanging(s.state.acceleration);
-      s.distribute_hanging(s.state.velocity);
+      s.kinematics.distribute_hanging(s.state.acceleration);
+      s.kinematics.distribute_hanging(s.state.velocity);
 
-      // The energy budget of the step (see Simulator::update_energy(), of
+      // The energy budget of the step (see Interface::accept_step(), of
       // which this is the fused form): with stiffness damping K u and K v
       // are products of their own, without it K u is known.
       if (beta != 0)
         {
-          s.apply_stiffness(s.state.velocity, residual);
-          s.apply_stiffness(s.state.displacement, stiffness_force);
+          s.system.apply_stiffness(s.state.velocity, residual);
+          s.system.apply_stiffness(s.state.displacement, stiffness_force);
           ku = local(stiffness_force);
         }
       const double *const kv   = (beta != 0) ? r : nullptr;
@@ -176,13 +184,13 @@ namespace rupture
       if (eta != 0)
         {
           zone_force = 0;
-          s.fault_zone->vmult_add(eta, s.state.velocity, zone_force);
+          s.system.add_fault_zone_force(eta, s.state.velocity, zone_force);
           zone = local(zone_force);
         }
       double *const applied = local(s.energy.applied_force);
       double *const damping = local(s.energy.damping_force);
       double *const absorbing =
-        s.has_absorbing ? local(s.energy.absorbing_force) : nullptr;
+        absorbing_damping ? local(s.energy.absorbing_force) : nullptr;
       double *const contact = local(s.energy.contact_force);
       // work of the loads, damping, absorbing boundaries, fault; strain and
       // kinetic energy (the fault's work at its entries only, where its
@@ -220,7 +228,7 @@ namespace rupture
             contact[i] = ff[i];
           }
       dealii::Utilities::MPI::sum(ArrayView<const double>(sums, 6),
-                                  s.communicator,
+                                  s.kinematics.communicator(),
                                   ArrayView<double>(sums, 6));
       s.energy.external_work += 0.5 * sums[0];
       s.energy.damping_dissipation += 0.5 * sums[1];

@@ -1,4 +1,4 @@
-#include <rupture/simulator/simulator.h>
+#include <rupture/fault/fault.h>
 #include <rupture/time_integration/implicit_newmark.h>
 
 #include <cmath>
@@ -22,30 +22,31 @@ namespace rupture
     void
     ImplicitNewmark<dim>::set_time_step(const double h)
     {
-      Simulator<dim> &s = simulator;
+      Context<dim> &s   = this->context;
       s.state.time_step = h;
       // Effective stiffness of eq. 14: K + a0 M + a1 C, with
       // C = alpha M + beta K + C_absorbing.
       const NewmarkCoefficients c(s.time_parameters.beta,
                                   s.time_parameters.gamma,
                                   h);
-      const double              stiffness_factor = 1 + c.a1 * s.rayleigh_beta,
-                   mass_factor = c.a0 + c.a1 * s.rayleigh_alpha;
+      const double stiffness_factor = 1 + c.a1 * s.system.rayleigh_beta(),
+                   mass_factor      = c.a0 + c.a1 * s.system.rayleigh_alpha();
       if (!std::isfinite(stiffness_factor) || !std::isfinite(mass_factor))
         {
           std::ostringstream message;
           message << "The effective stiffness K + a0 M + a1 C of the implicit "
                      "step is not finite: with the time step "
-                  << h << " s, <Damping/Rayleigh alpha> = " << s.rayleigh_alpha
-                  << " 1/s and <Damping/Rayleigh beta> = " << s.rayleigh_beta
-                  << " s give the factors " << stiffness_factor << " of K and "
-                  << mass_factor
+                  << h << " s, <Damping/Rayleigh alpha> = "
+                  << s.system.rayleigh_alpha()
+                  << " 1/s and <Damping/Rayleigh beta> = "
+                  << s.system.rayleigh_beta() << " s give the factors "
+                  << stiffness_factor << " of K and " << mass_factor
                   << " of M. Allowed: damping coefficients for which both are "
                      "finite (a few percent of critical damping is "
                      "alpha ~ 0.1-1 1/s, beta ~ 1e-4-1e-3 s).";
           AssertThrow(false, ExcMessage(message.str()));
         }
-      s.assemble_system_matrix(stiffness_factor, mass_factor, c.a1);
+      s.system.set_effective_stiffness(stiffness_factor, mass_factor, c.a1);
     }
 
 
@@ -78,7 +79,7 @@ namespace rupture
     {
       substep_depth     = 0;
       steps_without_cut = 0;
-      set_time_step(simulator.state.time_step);
+      set_time_step(this->context.state.time_step);
     }
 
 
@@ -94,9 +95,8 @@ namespace rupture
       // size that converged (a step that failed at full size tends to fail
       // again in the next one), and double it again after two steps
       // without a cut.
-      using VectorType       = typename Simulator<dim>::VectorType;
-      using NewtonFailure    = typename Simulator<dim>::NewtonFailure;
-      Simulator<dim>    &s   = simulator;
+      using Solver::NewtonFailure;
+      Context<dim>      &s   = this->context;
       const double       end = s.state.time, dt = s.state.time_step;
       const unsigned int cuts    = s.newton_parameters.max_step_cuts;
       unsigned int       deepest = 0;
@@ -192,8 +192,7 @@ namespace rupture
     void
     ImplicitNewmark<dim>::substep()
     {
-      using VectorType            = typename Simulator<dim>::VectorType;
-      Simulator<dim>           &s = simulator;
+      Context<dim>             &s = this->context;
       TimerOutput::Scope        t(s.timer, "Implicit step");
       const double              dt    = s.state.time_step;
       const double              gamma = s.time_parameters.gamma;
@@ -203,7 +202,7 @@ namespace rupture
         old_a(s.state.acceleration);
       VectorType load(s.state.displacement), residual(s.state.displacement),
         tmp(s.state.displacement), cv(s.state.displacement);
-      s.assemble_load_vector(s.state.time, load);
+      s.system.assemble_load(s.state.time, load);
 
       // New velocity and acceleration as functions of the new displacement
       // (Newmark, eq. 12), and the residual f - M a - C v - K u -
@@ -221,16 +220,16 @@ namespace rupture
       };
       const auto compute_residual = [&]() {
         residual = load;
-        s.apply_stiffness(s.state.displacement, tmp);
+        s.system.apply_stiffness(s.state.displacement, tmp);
         residual -= tmp;
-        s.apply_mass(s.state.acceleration, tmp);
+        s.system.apply_mass(s.state.acceleration, tmp);
         residual -= tmp;
-        s.compute_damping_force(s.state.velocity, cv);
+        s.system.damping_force(s.state.velocity, cv);
         residual -= cv;
         if (s.fault)
           {
             tmp = 0;
-            s.assemble_contact(tmp, false, 1);
+            s.nonlinear.add_contact_force(tmp);
             residual -= tmp;
           }
       };
@@ -244,9 +243,9 @@ namespace rupture
           if (s.newton_parameters.predictor == "constant acceleration")
             predicted->add(0.5 * dt * dt, old_a);
         }
-      s.solve_step(
+      s.nonlinear.solve(
         old_u, update_rates, compute_residual, residual, predicted.get());
-      s.finish_step(old_u, load, residual, cv);
+      this->accept_step(old_u, load, residual, cv);
     }
 
 

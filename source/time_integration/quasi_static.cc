@@ -1,4 +1,3 @@
-#include <rupture/simulator/simulator.h>
 #include <rupture/time_integration/quasi_static.h>
 
 namespace rupture
@@ -18,7 +17,7 @@ namespace rupture
     void
     QuasiStatic<dim>::prepare()
     {
-      simulator.assemble_system_matrix(1, 0, 0);
+      this->context.system.set_effective_stiffness(1, 0, 0);
     }
 
 
@@ -27,26 +26,25 @@ namespace rupture
     void
     QuasiStatic<dim>::step()
     {
-      using VectorType     = typename Simulator<dim>::VectorType;
-      Simulator<dim>    &s = simulator;
+      Context<dim>      &s = this->context;
       TimerOutput::Scope t(s.timer, "Quasi-static step");
       const VectorType   old_u(s.state.displacement);
       VectorType load(s.state.displacement), residual(s.state.displacement),
         tmp(s.state.displacement), zero(s.state.displacement);
-      s.assemble_load_vector(s.state.time, load);
+      s.system.assemble_load(s.state.time, load);
 
       const auto compute_residual = [&]() {
         residual = load;
-        s.apply_stiffness(s.state.displacement, tmp);
+        s.system.apply_stiffness(s.state.displacement, tmp);
         residual -= tmp;
         if (s.fault)
           {
             tmp = 0;
-            s.assemble_contact(tmp, false, 1);
+            s.nonlinear.add_contact_force(tmp);
             residual -= tmp;
           }
       };
-      s.solve_step(
+      s.nonlinear.solve(
         old_u, []() {}, compute_residual, residual);
 
       // The rate of the loading, for output; no inertia.
@@ -54,7 +52,7 @@ namespace rupture
       s.state.velocity -= old_u;
       s.state.velocity /= s.state.time_step;
       zero = 0;
-      s.finish_step(old_u, load, residual, zero);
+      this->accept_step(old_u, load, residual, zero);
     }
 
 

@@ -74,8 +74,9 @@ namespace rupture
    * time_stepping.cc (initial state, forces and the energy budget) and
    * newton.cc (the nonlinear solve of a step). The time integrators
    * (TimeIntegration::Interface, one class per scheme) step the state
-   * with these; like ASPECT's SimulatorAccess they are friends of this
-   * class.
+   * through the contracts of their TimeIntegration::Context (the elastic
+   * system, the nonlinear solve, the constraints), which Services
+   * implements with this class's members.
    */
   template <int dim>
   class Simulator
@@ -102,9 +103,18 @@ namespace rupture
     run();
 
   private:
-    friend class TimeIntegration::CentralDifference<dim>;
-    friend class TimeIntegration::ImplicitNewmark<dim>;
-    friend class TimeIntegration::QuasiStatic<dim>;
+    /**
+     * The contracts of the time integrators (Operators::ElasticSystem,
+     * Solver::NonlinearStep, TimeIntegration::Kinematics), implemented by
+     * forwarding to this class's members until these move into classes
+     * of their own (doc/design-core-plan.md). Defined in
+     * simulator/services.h.
+     */
+    class Services;
+    std::unique_ptr<Services> services;
+    /// What the time integrators work with (built once per phase).
+    TimeIntegration::Context<dim>
+    integrator_context();
 
     // --- set up (simulator.cc) ---
     void
@@ -340,15 +350,6 @@ namespace rupture
      */
     void
     initial_split_node_force(const VectorType &residual, VectorType &force);
-    /**
-     * After the solve of a step: accept the fault state and update the
-     * energy budget.
-     */
-    void
-    finish_step(const VectorType &old_displacement,
-                const VectorType &load,
-                const VectorType &residual,
-                const VectorType &new_damping_force);
     void
     apply_mass(const VectorType &x, VectorType &y) const;
     /// y = K x, with the stored matrix or matrix-free.
@@ -397,12 +398,6 @@ namespace rupture
     add_kinematic_increment(VectorType &displacement) const;
     void
     set_kinematic_velocity(VectorType &velocity) const;
-    void
-    update_energy(const VectorType &old_displacement,
-                  const VectorType &load,
-                  const VectorType &residual,
-                  const VectorType &damping_force,
-                  const VectorType *stiffness_force = nullptr);
     void
     check_finite(const VectorType  &v,
                  const std::string &what,

@@ -35,8 +35,6 @@ namespace rupture
       step() override;
 
     private:
-      using Interface<dim>::simulator;
-
       /// The inverse of the step's diagonal, 0 at constrained DoFs.
       VectorType inverse_diagonal;
       /// Work vectors kept between steps: the displacement at the start of

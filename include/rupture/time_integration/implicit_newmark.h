@@ -20,6 +20,7 @@ namespace rupture
     class ImplicitNewmark : public Interface<dim>
     {
     public:
+      using typename Interface<dim>::VectorType;
       using Interface<dim>::Interface;
 
       Scheme
@@ -35,12 +36,10 @@ namespace rupture
       restore_state(const std::vector<double> &state) override;
 
     private:
-      using Interface<dim>::simulator;
-
       /// Build the effective stiffness for steps of @p h.
       void
       set_time_step(const double h);
-      /// One Newmark step of the simulator's time step ending at its time.
+      /// One Newmark step of the state's time step, ending at its time.
       void
       substep();
 

@@ -1,6 +1,7 @@
 #ifndef rupture_time_integration_interface_h
 #define rupture_time_integration_interface_h
 
+#include <rupture/time_integration/context.h>
 #include <rupture/time_integration/newmark.h>
 
 #include <memory>
@@ -8,30 +9,26 @@
 
 namespace rupture
 {
-  template <int dim>
-  class Simulator;
-
   namespace TimeIntegration
   {
     /**
-     * A time integrator: it steps the simulator's state (displacement,
-     * velocity, acceleration, fault state, energy budget) over one time
-     * step with the operators the simulator owns (elastic operator,
-     * preconditioners, the fault's coupling, Newton's method). Each scheme
-     * is a class of its own that keeps its own work vectors and step
-     * control; the simulator creates one per phase of the run (create())
-     * and calls step() from its time loop.
-     *
-     * As ASPECT's SimulatorAccess, the integrators are friends of the
-     * simulator: they read and update its state in place rather than
-     * copying it through an interface at every step.
+     * A time integrator: it steps a TimeState (displacement, velocity,
+     * acceleration, time) and the fault's state over one time step and
+     * keeps the energy budget, with what its Context offers: the elastic
+     * system, the nonlinear solver, the discretization's constraints and
+     * the fault. Each scheme is a class of its own that keeps its own work
+     * vectors and step control; the simulator creates one per phase of the
+     * run (create()) and calls step() from its time loop. An integrator
+     * knows nothing of the simulator.
      */
     template <int dim>
     class Interface
     {
     public:
-      explicit Interface(Simulator<dim> &simulator)
-        : simulator(simulator)
+      using VectorType = dealii::TrilinosWrappers::MPI::Vector;
+
+      explicit Interface(const Context<dim> &context)
+        : context(context)
       {}
       virtual ~Interface() = default;
 
@@ -68,15 +65,28 @@ namespace rupture
       {}
 
     protected:
-      Simulator<dim> &simulator;
+      Context<dim> context;
+
+      /**
+       * After the solve of a step from @p old_displacement: accept the
+       * fault state (and add the work of its contact forces) and update
+       * the energy budget by the trapezoidal rule, with the step's
+       * @p load, the @p residual of its solve and the damping force
+       * @p new_damping_force at its end.
+       */
+      void
+      accept_step(const VectorType &old_displacement,
+                  const VectorType &load,
+                  const VectorType &residual,
+                  const VectorType &new_damping_force);
     };
 
     /**
-     * The integrator of @p scheme for @p simulator.
+     * The integrator of @p scheme working with @p context.
      */
     template <int dim>
     std::unique_ptr<Interface<dim>>
-    create(const Scheme scheme, Simulator<dim> &simulator);
+    create(const Scheme scheme, const Context<dim> &context);
   } // namespace TimeIntegration
 } // namespace rupture
 

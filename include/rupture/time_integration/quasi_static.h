@@ -17,6 +17,7 @@ namespace rupture
     class QuasiStatic : public Interface<dim>
     {
     public:
+      using typename Interface<dim>::VectorType;
       using Interface<dim>::Interface;
 
       Scheme
@@ -27,7 +28,6 @@ namespace rupture
       step() override;
 
     private:
-      using Interface<dim>::simulator;
     };
   } // namespace TimeIntegration
 } // namespace rupture
