@@ -4,6 +4,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
@@ -35,6 +36,34 @@ namespace rupture
     {
       Assert(!rows.empty(), dealii::ExcInternalError());
       return rows.back();
+    }
+
+
+
+    unsigned int
+    Statistics::index(const std::string &name) const
+    {
+      const auto c = std::find(columns.begin(), columns.end(), name);
+      AssertThrow(c != columns.end(),
+                  dealii::ExcMessage("The statistics have no column <" + name +
+                                     ">."));
+      return c - columns.begin();
+    }
+
+
+
+    bool
+    Statistics::has_column(const std::string &name) const
+    {
+      return std::find(columns.begin(), columns.end(), name) != columns.end();
+    }
+
+
+
+    double
+    Statistics::last(const std::string &name) const
+    {
+      return last_row()[index(name)];
     }
 
 

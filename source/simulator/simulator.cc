@@ -1,6 +1,7 @@
 #include <rupture/base/interruption.h>
 #include <rupture/base/time_units.h>
 #include <rupture/base/utilities.h>
+#include <rupture/output/statistics_columns.h>
 #include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
@@ -250,36 +251,32 @@ namespace rupture
     initialize_state();
     record_memory("initial state");
 
-    std::vector<std::string> columns = {
-      "Time step number",
-      "Time (s)",
-      "Time step size (s)",
-      "Linear solver iterations",
-      "Kinetic energy (J)",
-      "Strain energy (J)",
-      "Work of loads and boundary reactions (J)",
-      "Energy dissipated by damping and "
-      "absorbing boundaries (J)",
-      "Energy balance error (J): kinetic + "
-      "strain + dissipated + fault work - work - initial "
-      "energy",
-      "Wall time (s)"};
+    std::vector<std::string> columns = {"Time step number",
+                                        "Time (s)",
+                                        "Time step size (s)",
+                                        "Linear solver iterations",
+                                        Output::Columns::kinetic_energy,
+                                        Output::Columns::strain_energy,
+                                        Output::Columns::external_work,
+                                        Output::Columns::dissipated_energy,
+                                        Output::Columns::balance_error,
+                                        "Wall time (s)"};
     if (exact_displacement)
-      columns.emplace_back("L2 error of the displacement (m m^(dim/2))");
+      columns.emplace_back(Output::Columns::l2_error);
     if (fault)
       for (const std::string c :
            {"Newton iterations",
             "Slipping fault nodes",
             "Open fault nodes",
-            "Slipping area (m^2, m in 2-D)",
-            "Maximum slip (m)",
-            "Maximum slip rate (m/s)",
-            "Seismic moment (N m, N in 2-D)",
+            Output::Columns::slipping_area,
+            Output::Columns::max_slip,
+            Output::Columns::max_slip_rate,
+            Output::Columns::seismic_moment,
             "Moment magnitude Mw (3-D only)",
             "Frictional dissipation (J)",
             "Work done on the fault: penalty springs plus friction (J)",
             "Mean normal traction on the fault (Pa, < 0 in compression)",
-            "Mean shear traction on the fault (Pa)"})
+            Output::Columns::mean_shear_traction})
         columns.push_back(c);
     // Last, so that the columns before keep their numbers.
     if (has_absorbing)
@@ -399,7 +396,12 @@ namespace rupture
   void
   Simulator<dim>::finish_run()
   {
-    const auto &last = statistics.last_row();
+    const double kinetic = statistics.last(Output::Columns::kinetic_energy);
+    const double strain  = statistics.last(Output::Columns::strain_energy);
+    const double work    = statistics.last(Output::Columns::external_work);
+    const double dissipated =
+      statistics.last(Output::Columns::dissipated_energy);
+    const double balance = statistics.last(Output::Columns::balance_error);
     pcout << std::scientific << std::setprecision(6)
           << "Final state at t = " << state.clock.phase_time << " s";
     if (time_parameters.loading_phase)
@@ -407,10 +409,10 @@ namespace rupture
             << " s since the start of the run)";
     pcout << ":\n"
           << "   Initial energy       " << energy.initial << " J\n"
-          << "   Kinetic energy       " << last[4] << " J\n"
-          << "   Strain energy        " << last[5] << " J\n"
-          << "   Work of loads        " << last[6] << " J\n"
-          << "   Dissipated energy    " << last[7] << " J\n";
+          << "   Kinetic energy       " << kinetic << " J\n"
+          << "   Strain energy        " << strain << " J\n"
+          << "   Work of loads        " << work << " J\n"
+          << "   Dissipated energy    " << dissipated << " J\n";
     if (fault)
       {
         const Fault::Statistics f = fault->statistics();
@@ -423,13 +425,14 @@ namespace rupture
     pcout << "   Max |displacement|   " << state.displacement.linfty_norm()
           << " m\n";
     if (exact_displacement)
-      pcout << "   L2 error             " << last[10] << "\n";
+      pcout << "   L2 error             "
+            << statistics.last(Output::Columns::l2_error) << "\n";
     pcout << std::defaultfloat;
     // The balance error relative to the largest energy in play.
-    const double scale = std::max({std::abs(last[4]) + std::abs(last[5]),
+    const double scale = std::max({std::abs(kinetic) + std::abs(strain),
                                    std::abs(energy.fault_work),
-                                   std::abs(last[6]),
-                                   std::abs(last[7]),
+                                   std::abs(work),
+                                   std::abs(dissipated),
                                    std::abs(energy.initial),
                                    1e-300});
     // The implicit and quasi-static schemes close the budget to round-off
@@ -441,7 +444,7 @@ namespace rupture
         1e-8;
     pcout << "   Energy balance error below " << tolerance
           << " of the energy scale: "
-          << (std::abs(last[8]) < tolerance * scale ? "yes" : "no") << "\n";
+          << (std::abs(balance) < tolerance * scale ? "yes" : "no") << "\n";
     if (multigrid)
       {
         // What multigrid is for: iteration counts that stay bounded.
@@ -463,7 +466,7 @@ namespace rupture
       }
     if (!test_mode)
       {
-        pcout << "   Energy balance error " << last[8] << " J\n";
+        pcout << "   Energy balance error " << balance << " J\n";
         print_performance_summary();
         timer.print_summary();
       }

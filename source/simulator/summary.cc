@@ -1,3 +1,4 @@
+#include <rupture/output/statistics_columns.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/base/utilities.h>
@@ -105,17 +106,18 @@ namespace rupture
   Simulator<dim>::termination_sample(const std::vector<double> &row) const
   {
     Termination::Sample s;
-    s.time           = state.clock.phase_time;
-    s.kinetic_energy = row[4];
+    s.time            = state.clock.phase_time;
+    const auto column = [&](const char *name) {
+      return row[statistics.index(name)];
+    };
+    s.kinetic_energy = column(Output::Columns::kinetic_energy);
     if (fault)
       {
-        // The fault's columns of statistics_row(), after the L2 error.
-        const unsigned int f  = exact_displacement ? 11 : 10;
-        s.slipping_area       = row[f + 3];
-        s.max_slip            = row[f + 4];
-        s.max_slip_rate       = row[f + 5];
-        s.seismic_moment      = row[f + 6];
-        s.mean_shear_traction = row[f + 11];
+        s.slipping_area       = column(Output::Columns::slipping_area);
+        s.max_slip            = column(Output::Columns::max_slip);
+        s.max_slip_rate       = column(Output::Columns::max_slip_rate);
+        s.seismic_moment      = column(Output::Columns::seismic_moment);
+        s.mean_shear_traction = column(Output::Columns::mean_shear_traction);
       }
     if (termination.uses_wall_clock())
       {

@@ -42,6 +42,18 @@ namespace rupture
 
       const std::vector<double> &
       last_row() const;
+      /**
+       * The position of the column @p name among set_columns()'s names;
+       * throws if there is none of that name.
+       */
+      unsigned int
+      index(const std::string &name) const;
+      /// Whether a column of that name exists.
+      bool
+      has_column(const std::string &name) const;
+      /// The value of column @p name in the last row.
+      double
+      last(const std::string &name) const;
 
       std::size_t
       n_rows() const
