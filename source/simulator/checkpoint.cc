@@ -32,7 +32,37 @@ namespace rupture
   {
     namespace fs = std::filesystem;
 
-    const char *const format_name = "rupture checkpoint 1";
+    /// Version 2 names every scalar of the state (version 1, a list of 24
+    /// numbers by position, is still read).
+    const char *const format_name    = "rupture checkpoint 2";
+    const char *const format_name_v1 = "rupture checkpoint 1";
+
+    /// The names of version 1's 24 scalars, in their order (the first four
+    /// describe the checkpoint).
+    const std::vector<std::string> v1_names = {"checkpoint/dimension",
+                                               "checkpoint/ranks",
+                                               "checkpoint/DoFs",
+                                               "checkpoint/fields",
+                                               "time/time",
+                                               "time/phase time",
+                                               "time/step",
+                                               "time/dynamic start",
+                                               "time/in dynamic phase",
+                                               "time/time step",
+                                               "energy/initial",
+                                               "energy/kinetic",
+                                               "energy/strain",
+                                               "energy/external work",
+                                               "energy/damping dissipation",
+                                               "energy/absorbed",
+                                               "energy/fault work",
+                                               "output/next output time",
+                                               "output/next fault output time",
+                                               "output/peak slip rate",
+                                               "newton/last linear iterations",
+                                               "newton/last iterations",
+                                               "time/phase start time",
+                                               "time/steps in phase"};
 
     /// The entries of a parameter file printed as ShortPRM, by path.
     std::map<std::string, std::string>
@@ -109,7 +139,7 @@ namespace rupture
     std::ifstream in(resume_from + "/state", std::ios::binary);
     std::string   format, parameters;
     BinaryIO::read(in, format);
-    AssertThrow(format == format_name,
+    AssertThrow(format == format_name || format == format_name_v1,
                 ExcMessage("<" + resume_from +
                            "/state> is not a checkpoint of this version of "
                            "rupture."));
@@ -235,39 +265,25 @@ namespace rupture
         std::ostringstream out;
         BinaryIO::write(out, std::string(format_name));
         BinaryIO::write(out, parameters_text);
-        BinaryIO::write(
-          out,
-          std::vector<double>{double(dim),
-                              double(n_ranks),
-                              double(dof_handler.n_dofs()),
-                              double(fields.size()),
-                              state.time,
-                              state.clock.phase_time,
-                              double(state.step),
-                              state.clock.dynamic_start,
-                              double(state.clock.in_dynamic_phase),
-                              state.time_step,
-                              energy.initial,
-                              energy.kinetic,
-                              energy.strain,
-                              energy.external_work,
-                              energy.damping_dissipation,
-                              energy.absorbed,
-                              energy.fault_work,
-                              next_output_time,
-                              next_fault_output_time,
-                              peak_slip_rate,
-                              double(newton.last_linear_iterations),
-                              double(newton.last_iterations),
-                              state.clock.phase_start_time,
-                              double(state.clock.steps_in_phase)});
+        BinaryIO::Records records;
+        records["checkpoint/dimension"] = dim;
+        records["checkpoint/ranks"]     = n_ranks;
+        records["checkpoint/DoFs"]      = dof_handler.n_dofs();
+        records["checkpoint/fields"]    = fields.size();
+        state.save(records);
+        energy.save(records);
+        newton.save(records);
+        records["output/next output time"]       = next_output_time;
+        records["output/next fault output time"] = next_fault_output_time;
+        records["output/peak slip rate"]         = peak_slip_rate;
+        integrator->save(records);
+        BinaryIO::write(out, records);
         statistics.save(out);
         volume_output->save(out);
         receivers->save(out);
         if (fault)
           fault_output->save(out);
         termination.save(out);
-        BinaryIO::write(out, integrator->saved_state());
         // Written last: a checkpoint is complete when its state is there.
         Utilities::write_file_atomically((writing / "state").string(),
                                          out.str());
@@ -306,22 +322,39 @@ namespace rupture
     std::string format, parameters;
     BinaryIO::read(in, format);
     BinaryIO::read(in, parameters);
-    std::vector<double> s;
-    BinaryIO::read(in, s);
-    AssertThrow(s.size() == 24 && s[0] == dim,
+    BinaryIO::Records &records = checkpoint_records;
+    if (format == format_name_v1)
+      {
+        // Version 1: the scalars by position.
+        std::vector<double> s;
+        BinaryIO::read(in, s);
+        AssertThrow(s.size() == v1_names.size(),
+                    ExcMessage("The checkpoint <" + resume_from +
+                               "> is damaged."));
+        records.clear();
+        for (unsigned int k = 0; k < s.size(); ++k)
+          records[v1_names[k]] = s[k];
+      }
+    else
+      BinaryIO::read(in, records);
+    const auto record = [&](const std::string &name) {
+      return BinaryIO::record(records, name);
+    };
+    AssertThrow(record("checkpoint/dimension") == dim,
                 ExcMessage("The checkpoint <" + resume_from +
                            "> is damaged or of another dimension."));
-    AssertThrow(s[2] == dof_handler.n_dofs(),
-                ExcMessage("The checkpoint <" + resume_from + "> has " +
-                           std::to_string(static_cast<long>(s[2])) +
-                           " DoFs, this run " +
-                           std::to_string(dof_handler.n_dofs()) +
-                           ": it was written for another mesh."));
-    const unsigned int n_saved_ranks = static_cast<unsigned int>(s[1]);
+    AssertThrow(record("checkpoint/DoFs") == dof_handler.n_dofs(),
+                ExcMessage(
+                  "The checkpoint <" + resume_from + "> has " +
+                  std::to_string(static_cast<long>(record("checkpoint/DoFs"))) +
+                  " DoFs, this run " + std::to_string(dof_handler.n_dofs()) +
+                  ": it was written for another mesh."));
+    const unsigned int n_saved_ranks =
+      static_cast<unsigned int>(record("checkpoint/ranks"));
 
     // The fields, on this run's DoFs.
     std::vector<VectorType *> fields = checkpoint_fields();
-    AssertThrow(fields.size() == s[3],
+    AssertThrow(fields.size() == record("checkpoint/fields"),
                 ExcMessage("The checkpoint <" + resume_from +
                            "> holds other fields than this run needs."));
     for (VectorType *v : fields)
@@ -332,26 +365,12 @@ namespace rupture
     for (VectorType *v : fields)
       distribute_hanging(*v);
 
-    state.time                    = s[4];
-    state.clock.phase_time        = s[5];
-    state.step                    = static_cast<unsigned int>(s[6]);
-    state.clock.dynamic_start     = s[7];
-    state.clock.in_dynamic_phase  = s[8] != 0;
-    state.time_step               = s[9];
-    energy.initial                = s[10];
-    energy.kinetic                = s[11];
-    energy.strain                 = s[12];
-    energy.external_work          = s[13];
-    energy.damping_dissipation    = s[14];
-    energy.absorbed               = s[15];
-    energy.fault_work             = s[16];
-    next_output_time              = s[17];
-    next_fault_output_time        = s[18];
-    peak_slip_rate                = s[19];
-    newton.last_linear_iterations = static_cast<unsigned int>(s[20]);
-    newton.last_iterations        = static_cast<unsigned int>(s[21]);
-    state.clock.phase_start_time  = s[22];
-    state.clock.steps_in_phase    = static_cast<unsigned int>(s[23]);
+    state.load(records);
+    energy.load(records);
+    newton.load(records);
+    next_output_time       = record("output/next output time");
+    next_fault_output_time = record("output/next fault output time");
+    peak_slip_rate         = record("output/peak slip rate");
 
     statistics.load(in);
     volume_output->load(in);
@@ -366,7 +385,20 @@ namespace rupture
         fault->set_time(state.time);
       }
     termination.load(in);
-    BinaryIO::read(in, integrator_state);
+    if (format == format_name_v1)
+      {
+        // Version 1 kept the implicit scheme's sub-stepping last.
+        std::vector<double> integrator_state;
+        BinaryIO::read(in, integrator_state);
+        AssertThrow(integrator_state.empty() || integrator_state.size() == 2,
+                    ExcMessage("The checkpoint's state of the implicit scheme "
+                               "is damaged."));
+        if (integrator_state.size() == 2)
+          {
+            records["integrator/substep depth"]     = integrator_state[0];
+            records["integrator/steps without cut"] = integrator_state[1];
+          }
+      }
   }
 
 

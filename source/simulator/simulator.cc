@@ -238,7 +238,7 @@ namespace rupture
         if (fault)
           fault->continue_dynamic_phase(state.clock.dynamic_start);
       }
-    integrator->restore_state(integrator_state);
+    integrator->load(checkpoint_records);
     run_phases(state.clock.steps_in_phase);
   }
 

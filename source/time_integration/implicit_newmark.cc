@@ -52,23 +52,23 @@ namespace rupture
 
 
     template <int dim>
-    std::vector<double>
-    ImplicitNewmark<dim>::saved_state() const
+    void
+    ImplicitNewmark<dim>::save(BinaryIO::Records &records) const
     {
-      return {double(substep_depth), double(steps_without_cut)};
+      records["integrator/substep depth"]     = substep_depth;
+      records["integrator/steps without cut"] = steps_without_cut;
     }
 
 
 
     template <int dim>
     void
-    ImplicitNewmark<dim>::restore_state(const std::vector<double> &state)
+    ImplicitNewmark<dim>::load(const BinaryIO::Records &records)
     {
-      AssertThrow(state.size() == 2,
-                  ExcMessage("The checkpoint's state of the implicit scheme "
-                             "is damaged."));
-      substep_depth     = static_cast<unsigned int>(state[0]);
-      steps_without_cut = static_cast<unsigned int>(state[1]);
+      substep_depth = static_cast<unsigned int>(
+        BinaryIO::record(records, "integrator/substep depth"));
+      steps_without_cut = static_cast<unsigned int>(
+        BinaryIO::record(records, "integrator/steps without cut"));
     }
 
 

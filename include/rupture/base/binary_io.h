@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <istream>
+#include <map>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -67,6 +68,35 @@ namespace rupture
         }
     }
 
+    inline void
+    write(std::ostream &out, const std::map<std::string, double> &records)
+    {
+      write(out, static_cast<std::uint64_t>(records.size()));
+      for (const auto &[name, value] : records)
+        {
+          write(out, name);
+          write(out, value);
+        }
+    }
+
+    /**
+     * The named scalars of a checkpoint ("time/step", "energy/kinetic",
+     * ...): each owner of a part of the state writes and reads its own.
+     */
+    using Records = std::map<std::string, double>;
+
+    /// The record @p name; a missing one is a damaged checkpoint.
+    inline double
+    record(const Records &records, const std::string &name)
+    {
+      const auto r = records.find(name);
+      AssertThrow(r != records.end(),
+                  dealii::ExcMessage("A checkpoint has no record <" + name +
+                                     ">: it is damaged or not a checkpoint of "
+                                     "this program."));
+      return r->second;
+    }
+
     /// Read raw bytes; a short read is a damaged checkpoint.
     inline void
     read_bytes(std::istream &in, char *data, const std::size_t n)
@@ -127,6 +157,21 @@ namespace rupture
       v.resize(read_size(in));
       for (auto &x : v)
         read(in, x);
+    }
+
+    inline void
+    read(std::istream &in, std::map<std::string, double> &records)
+    {
+      records.clear();
+      const std::uint64_t n = read_size(in);
+      for (std::uint64_t k = 0; k < n; ++k)
+        {
+          std::string name;
+          double      value;
+          read(in, name);
+          read(in, value);
+          records[name] = value;
+        }
     }
 
     inline void

@@ -225,9 +225,9 @@ namespace rupture
     std::string resume_from;
     /// The run's parameters as written to parameters.prm (ShortPRM).
     std::string parameters_text;
-    /// The time integrator's state read from a checkpoint, restored once
-    /// the phase's integrator is prepared.
-    std::vector<double> integrator_state;
+    /// The named records read from a checkpoint; the time integrator's
+    /// are restored once the phase's integrator is prepared.
+    BinaryIO::Records checkpoint_records;
     bool
     checkpoints_enabled() const
     {

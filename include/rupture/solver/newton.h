@@ -1,6 +1,8 @@
 #ifndef rupture_solver_newton_h
 #define rupture_solver_newton_h
 
+#include <rupture/base/binary_io.h>
+
 #include <array>
 #include <stdexcept>
 #include <string>
@@ -61,6 +63,22 @@ namespace rupture
       std::array<unsigned long, 2> n_linear_solves         = {{0, 0}};
       /// Fault status for which the preconditioner was last built.
       unsigned long preconditioner_signature = 0;
+
+      /// What a checkpoint keeps: the counts of the last solve.
+      void
+      save(BinaryIO::Records &records) const
+      {
+        records["newton/last linear iterations"] = last_linear_iterations;
+        records["newton/last iterations"]        = last_iterations;
+      }
+      void
+      load(const BinaryIO::Records &records)
+      {
+        last_linear_iterations = static_cast<unsigned int>(
+          BinaryIO::record(records, "newton/last linear iterations"));
+        last_iterations = static_cast<unsigned int>(
+          BinaryIO::record(records, "newton/last iterations"));
+      }
     };
 
     /// Newton's method did not converge (the step may be cut).

@@ -1,6 +1,8 @@
 #ifndef rupture_time_integration_energy_budget_h
 #define rupture_time_integration_energy_budget_h
 
+#include <rupture/base/binary_io.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 namespace rupture
@@ -44,6 +46,31 @@ namespace rupture
       VectorType contact_force;
       /// The force of the absorbing boundaries at the end of the last step.
       VectorType absorbing_force;
+
+      /// The energies as named checkpoint records (the forces are fields).
+      void
+      save(BinaryIO::Records &records) const
+      {
+        records["energy/initial"]             = initial;
+        records["energy/kinetic"]             = kinetic;
+        records["energy/strain"]              = strain;
+        records["energy/external work"]       = external_work;
+        records["energy/damping dissipation"] = damping_dissipation;
+        records["energy/absorbed"]            = absorbed;
+        records["energy/fault work"]          = fault_work;
+      }
+      void
+      load(const BinaryIO::Records &records)
+      {
+        using BinaryIO::record;
+        initial             = record(records, "energy/initial");
+        kinetic             = record(records, "energy/kinetic");
+        strain              = record(records, "energy/strain");
+        external_work       = record(records, "energy/external work");
+        damping_dissipation = record(records, "energy/damping dissipation");
+        absorbed            = record(records, "energy/absorbed");
+        fault_work          = record(records, "energy/fault work");
+      }
 
       /// What the budget misses: zero when energy is conserved.
       double

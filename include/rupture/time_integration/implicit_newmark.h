@@ -30,10 +30,10 @@ namespace rupture
       void
       step() override;
 
-      std::vector<double>
-      saved_state() const override;
       void
-      restore_state(const std::vector<double> &state) override;
+      save(BinaryIO::Records &records) const override;
+      void
+      load(const BinaryIO::Records &records) override;
 
     private:
       /// Build the effective stiffness for steps of @p h.

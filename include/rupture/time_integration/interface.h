@@ -52,16 +52,15 @@ namespace rupture
 
       /**
        * What a checkpoint keeps of the integrator between steps (the
-       * implicit scheme's sub-stepping after step cuts), and its restore
-       * after prepare(). Nothing by default.
+       * implicit scheme's sub-stepping after step cuts), as records named
+       * "integrator/...", and its restore after prepare(). Nothing by
+       * default.
        */
-      virtual std::vector<double>
-      saved_state() const
-      {
-        return {};
-      }
       virtual void
-      restore_state(const std::vector<double> &)
+      save(BinaryIO::Records &) const
+      {}
+      virtual void
+      load(const BinaryIO::Records &)
       {}
 
     protected:

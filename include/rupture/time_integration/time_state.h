@@ -1,6 +1,7 @@
 #ifndef rupture_time_integration_time_state_h
 #define rupture_time_integration_time_state_h
 
+#include <rupture/base/binary_io.h>
 #include <rupture/time_integration/phase_clock.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -34,6 +35,34 @@ namespace rupture
       unsigned int step = 0;
       /// The clock of the run's phases (loading, dynamic).
       PhaseClock clock;
+
+      /// The scalars (not the fields) as named checkpoint records.
+      void
+      save(BinaryIO::Records &records) const
+      {
+        records["time/time"]             = time;
+        records["time/time step"]        = time_step;
+        records["time/step"]             = step;
+        records["time/phase time"]       = clock.phase_time;
+        records["time/dynamic start"]    = clock.dynamic_start;
+        records["time/in dynamic phase"] = clock.in_dynamic_phase;
+        records["time/phase start time"] = clock.phase_start_time;
+        records["time/steps in phase"]   = clock.steps_in_phase;
+      }
+      void
+      load(const BinaryIO::Records &records)
+      {
+        using BinaryIO::record;
+        time      = record(records, "time/time");
+        time_step = record(records, "time/time step");
+        step      = static_cast<unsigned int>(record(records, "time/step"));
+        clock.phase_time       = record(records, "time/phase time");
+        clock.dynamic_start    = record(records, "time/dynamic start");
+        clock.in_dynamic_phase = record(records, "time/in dynamic phase") != 0;
+        clock.phase_start_time = record(records, "time/phase start time");
+        clock.steps_in_phase =
+          static_cast<unsigned int>(record(records, "time/steps in phase"));
+      }
     };
   } // namespace TimeIntegration
 } // namespace rupture
