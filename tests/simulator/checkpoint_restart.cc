@@ -27,7 +27,11 @@
 // by one. So on two ranks the statistics are compared within 1e-8, as for
 // a checkpoint continued on another number of ranks, and the iteration
 // counts not at all; the stations (8 digits) stay exact. The same holds
-// for the implicit run continued between sub-steps.
+// for the implicit run continued between sub-steps. Last, a checkpoint of
+// version 1 (the scalars by position; version 2 names them): the step-21
+// checkpoint of the sub-stepping run rewritten in that layout, continued.
+
+#include <rupture/base/binary_io.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -37,7 +41,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -67,6 +73,61 @@ namespace
       if (line.rfind("# ", 0) == 0 && line.find(word) != std::string::npos)
         columns.push_back(std::stoi(line.substr(2)) - 1);
     return columns;
+  }
+
+  /// Rewrite the state file of a checkpoint in the layout of version 1:
+  /// the scalars as 24 numbers in a fixed order instead of named records,
+  /// and the integrator's sub-stepping as a list at the end.
+  void
+  rewrite_as_version_1(const std::string &file)
+  {
+    std::ifstream in(file, std::ios::binary);
+    std::string   format, parameters;
+    rupture::BinaryIO::read(in, format);
+    rupture::BinaryIO::read(in, parameters);
+    rupture::BinaryIO::Records records;
+    rupture::BinaryIO::read(in, records);
+    const std::string              rest((std::istreambuf_iterator<char>(in)),
+                           std::istreambuf_iterator<char>());
+    const std::vector<std::string> names = {"checkpoint/dimension",
+                                            "checkpoint/ranks",
+                                            "checkpoint/DoFs",
+                                            "checkpoint/fields",
+                                            "time/time",
+                                            "time/phase time",
+                                            "time/step",
+                                            "time/dynamic start",
+                                            "time/in dynamic phase",
+                                            "time/time step",
+                                            "energy/initial",
+                                            "energy/kinetic",
+                                            "energy/strain",
+                                            "energy/external work",
+                                            "energy/damping dissipation",
+                                            "energy/absorbed",
+                                            "energy/fault work",
+                                            "output/next output time",
+                                            "output/next fault output time",
+                                            "output/peak slip rate",
+                                            "newton/last linear iterations",
+                                            "newton/last iterations",
+                                            "time/phase start time",
+                                            "time/steps in phase"};
+    std::vector<double>            scalars;
+    for (const auto &name : names)
+      scalars.push_back(records.at(name));
+    std::vector<double> integrator;
+    if (records.count("integrator/substep depth"))
+      integrator = {records.at("integrator/substep depth"),
+                    records.at("integrator/steps without cut")};
+    std::ostringstream out;
+    rupture::BinaryIO::write(out, std::string("rupture checkpoint 1"));
+    rupture::BinaryIO::write(out, parameters);
+    rupture::BinaryIO::write(out, scalars);
+    out << rest;
+    rupture::BinaryIO::write(out, integrator);
+    in.close();
+    std::ofstream(file, std::ios::binary) << out.str();
   }
 
   /// Whether two tables are equal: bit for bit (@p tolerance 0), or within
@@ -375,6 +436,41 @@ main(int argc, char **argv)
             "yes" :
             "no");
       }
+  }
+  // A checkpoint of version 1 (its scalars by position, the integrator's
+  // last) is still read: the step-21 checkpoint rewritten in that layout
+  // continues as the uninterrupted run.
+  {
+    std::string errors;
+    if (root)
+      fs::remove_all("substeps-v1");
+    MPI_Barrier(comm);
+    const std::vector<std::string> every  = {"--set", "Checkpoint/Interval=21"};
+    std::vector<std::string>       resume = every;
+    resume.push_back("--resume");
+    run({}, "substeps-v1", every, comm, errors);
+    MPI_Barrier(comm);
+    if (root)
+      {
+        fs::remove_all("substeps-v1/checkpoint/step-000000029");
+        rewrite_as_version_1("substeps-v1/checkpoint/step-000000021/state");
+      }
+    MPI_Barrier(comm);
+    const int code = run({}, "substeps-v1", resume, comm, errors);
+    if (root)
+      std::printf("a checkpoint of version 1: exit code %d; statistics as the "
+                  "uninterrupted run's, %s: %s\n",
+                  code,
+                  n_ranks == 1 ? "to the last digit" :
+                                 "within 1e-8 (iteration counts aside)",
+                  same("substeps-full/statistics",
+                       "substeps-v1/statistics",
+                       n_ranks == 1 ? 0 : 1e-8,
+                       n_ranks == 1 ? std::vector<unsigned int>() :
+                                      columns_named("substeps-full/statistics",
+                                                    "iterations")) ?
+                    "yes" :
+                    "no");
   }
   input = prm;
 
