@@ -136,11 +136,11 @@ namespace rupture
   void
   Simulator<dim>::check_checkpoint_parameters(ParameterHandler &prm) const
   {
-    std::ifstream in(resume_from + "/state", std::ios::binary);
+    std::ifstream in(checkpoints.resume_from + "/state", std::ios::binary);
     std::string   format, parameters;
     BinaryIO::read(in, format);
     AssertThrow(format == format_name || format == format_name_v1,
-                ExcMessage("<" + resume_from +
+                ExcMessage("<" + checkpoints.resume_from +
                            "/state> is not a checkpoint of this version of "
                            "rupture."));
     BinaryIO::read(in, parameters);
@@ -153,7 +153,7 @@ namespace rupture
         const std::string old_value =
           at == before.end() ? std::string("(not set)") : at->second;
         AssertThrow(value == old_value || may_change(entry),
-                    ExcMessage("The checkpoint <" + resume_from +
+                    ExcMessage("The checkpoint <" + checkpoints.resume_from +
                                "> was written with <" + entry + "> = '" +
                                old_value + "', but this run has '" + value +
                                "'. A run continues only with the parameters "
@@ -264,7 +264,7 @@ namespace rupture
       {
         std::ostringstream out;
         BinaryIO::write(out, std::string(format_name));
-        BinaryIO::write(out, parameters_text);
+        BinaryIO::write(out, checkpoints.parameters_text);
         BinaryIO::Records records;
         records["checkpoint/dimension"] = dim;
         records["checkpoint/ranks"]     = n_ranks;
@@ -273,9 +273,8 @@ namespace rupture
         state.save(records);
         energy.save(records);
         newton.save(records);
-        records["output/next output time"]       = next_output_time;
-        records["output/next fault output time"] = next_fault_output_time;
-        records["output/peak slip rate"]         = peak_slip_rate;
+        output_schedule.save(records);
+        records["output/peak slip rate"] = peak_slip_rate;
         integrator->save(records);
         BinaryIO::write(out, records);
         statistics.save(out);
@@ -305,7 +304,7 @@ namespace rupture
           fs::remove_all(all[k], error);
       }
     Utilities::throw_if_any(message, communicator);
-    last_checkpoint_wall = MPI_Wtime();
+    checkpoints.last_write = MPI_Wtime();
   }
 
 
@@ -315,21 +314,21 @@ namespace rupture
   Simulator<dim>::read_checkpoint()
   {
     TimerOutput::Scope t(timer, "Checkpoint");
-    std::ifstream      in(resume_from + "/state", std::ios::binary);
+    std::ifstream      in(checkpoints.resume_from + "/state", std::ios::binary);
     AssertThrow(in,
-                ExcMessage("The checkpoint <" + resume_from +
+                ExcMessage("The checkpoint <" + checkpoints.resume_from +
                            "/state> cannot be read."));
     std::string format, parameters;
     BinaryIO::read(in, format);
     BinaryIO::read(in, parameters);
-    BinaryIO::Records &records = checkpoint_records;
+    BinaryIO::Records &records = checkpoints.records;
     if (format == format_name_v1)
       {
         // Version 1: the scalars by position.
         std::vector<double> s;
         BinaryIO::read(in, s);
         AssertThrow(s.size() == v1_names.size(),
-                    ExcMessage("The checkpoint <" + resume_from +
+                    ExcMessage("The checkpoint <" + checkpoints.resume_from +
                                "> is damaged."));
         records.clear();
         for (unsigned int k = 0; k < s.size(); ++k)
@@ -341,11 +340,11 @@ namespace rupture
       return BinaryIO::record(records, name);
     };
     AssertThrow(record("checkpoint/dimension") == dim,
-                ExcMessage("The checkpoint <" + resume_from +
+                ExcMessage("The checkpoint <" + checkpoints.resume_from +
                            "> is damaged or of another dimension."));
     AssertThrow(record("checkpoint/DoFs") == dof_handler.n_dofs(),
                 ExcMessage(
-                  "The checkpoint <" + resume_from + "> has " +
+                  "The checkpoint <" + checkpoints.resume_from + "> has " +
                   std::to_string(static_cast<long>(record("checkpoint/DoFs"))) +
                   " DoFs, this run " + std::to_string(dof_handler.n_dofs()) +
                   ": it was written for another mesh."));
@@ -355,7 +354,7 @@ namespace rupture
     // The fields, on this run's DoFs.
     std::vector<VectorType *> fields = checkpoint_fields();
     AssertThrow(fields.size() == record("checkpoint/fields"),
-                ExcMessage("The checkpoint <" + resume_from +
+                ExcMessage("The checkpoint <" + checkpoints.resume_from +
                            "> holds other fields than this run needs."));
     for (VectorType *v : fields)
       v->reinit(locally_owned_dofs, communicator);
@@ -368,9 +367,8 @@ namespace rupture
     state.load(records);
     energy.load(records);
     newton.load(records);
-    next_output_time       = record("output/next output time");
-    next_fault_output_time = record("output/next fault output time");
-    peak_slip_rate         = record("output/peak slip rate");
+    output_schedule.load(records);
+    peak_slip_rate = record("output/peak slip rate");
 
     statistics.load(in);
     volume_output->load(in);
@@ -380,7 +378,8 @@ namespace rupture
         fault_output->load(in);
         std::vector<std::string> files;
         for (unsigned int r = 0; r < n_saved_ranks; ++r)
-          files.push_back(resume_from + "/fault." + std::to_string(r));
+          files.push_back(checkpoints.resume_from + "/fault." +
+                          std::to_string(r));
         fault->load(files);
         fault->set_time(state.time);
       }

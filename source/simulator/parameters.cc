@@ -460,8 +460,8 @@ namespace rupture
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
-    output_interval        = prm.get_double("Output interval");
-    cells_per_output_piece = prm.get_integer("Cells per output piece");
+    output_schedule.interval = prm.get_double("Output interval");
+    cells_per_output_piece   = prm.get_integer("Cells per output piece");
     {
       using C = typename Output::VolumeOutput<dim>::Compression;
       const std::string choice = prm.get("Compression");
@@ -471,7 +471,7 @@ namespace rupture
     }
     volume_fields =
       dealii::Utilities::split_string_list(prm.get("Volume fields"));
-    screen_interval = prm.get_integer("Screen output interval");
+    output_schedule.screen_interval = prm.get_integer("Screen output interval");
     receivers = std::make_unique<Output::Receivers<dim>>(prm.get("Receivers"),
                                                          communicator);
     prm.leave_subsection();
@@ -515,15 +515,16 @@ namespace rupture
       {
         fault_output = std::make_unique<Fault::FaultOutput<dim>>();
         fault_output->parse_parameters(prm);
-        fault_output_interval = fault_output->surface_interval(output_interval);
+        output_schedule.fault_interval =
+          fault_output->surface_interval(output_schedule.interval);
       }
     n_sides = fault ? 2 : 1;
     termination.parse_parameters(prm, fault != nullptr);
     prm.enter_subsection("Checkpoint");
-    checkpoint_interval = prm.get_integer("Interval");
-    checkpoint_minutes  = prm.get_double("Wall-clock interval");
+    checkpoints.interval = prm.get_integer("Interval");
+    checkpoints.minutes  = prm.get_double("Wall-clock interval");
     prm.leave_subsection();
-    AssertThrow(std::isfinite(checkpoint_minutes),
+    AssertThrow(std::isfinite(checkpoints.minutes),
                 ExcMessage("<Checkpoint/Wall-clock interval> must be a "
                            "finite number of minutes (0: off)."));
     // Station and receiver files share the directory: two series with one

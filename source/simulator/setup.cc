@@ -115,11 +115,12 @@ namespace rupture
       materials.check_material_id(cell->material_id());
     // A continued run takes the checkpoint's refined mesh (and its
     // partition onto this run's ranks), with the fields attached.
-    if (resume)
-      triangulation.load(resume_from + "/mesh");
+    if (checkpoints.resume)
+      triangulation.load(checkpoints.resume_from + "/mesh");
     else
       triangulation.refine_global(n_global_refinements);
-    for (unsigned int level = 0; level < (resume ? 0 : n_region_refinements);
+    for (unsigned int level = 0;
+         level < (checkpoints.resume ? 0 : n_region_refinements);
          ++level)
       {
         std::string bad_centre;

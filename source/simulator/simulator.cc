@@ -41,17 +41,16 @@ namespace rupture
     , has_absorbing(false)
     , stable_time_step(0)
     , wall_time_start(0)
-    , next_output_time(0)
   {
-    services     = std::make_unique<Services>(*this);
-    this->resume = resume;
+    services                 = std::make_unique<Services>(*this);
+    this->checkpoints.resume = resume;
     parse_parameters(prm);
     if (resume)
       {
         // The newest complete checkpoint of this output directory, written
         // with the same parameters (before anything is built).
-        resume_from = newest_checkpoint();
-        AssertThrow(!resume_from.empty(),
+        checkpoints.resume_from = newest_checkpoint();
+        AssertThrow(!checkpoints.resume_from.empty(),
                     ExcMessage("--resume: the output directory <" +
                                output_directory->name() +
                                "> holds no complete checkpoint "
@@ -60,7 +59,8 @@ namespace rupture
                                "<Checkpoint/Wall-clock interval> is set; run "
                                "without --resume to start anew."));
         check_checkpoint_parameters(prm);
-        pcout << "Continuing from the checkpoint " << resume_from << "\n";
+        pcout << "Continuing from the checkpoint " << checkpoints.resume_from
+              << "\n";
       }
 
     pcout << "rupture: " << dim << "-D, scheme "
@@ -127,14 +127,15 @@ namespace rupture
   Simulator<dim>::prepare_output_directory(ParameterHandler &prm)
   {
     // Collective: the lock, and the removal of the earlier run's files.
-    output_directory->open(resume);
+    output_directory->open(checkpoints.resume);
     std::ostringstream parameters;
     prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-    parameters_text = parameters.str();
+    checkpoints.parameters_text = parameters.str();
     if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       {
-        log.attach_file(output_directory->record("log.txt"), resume);
-        output_directory->write("parameters.prm", parameters_text);
+        log.attach_file(output_directory->record("log.txt"),
+                        checkpoints.resume);
+        output_directory->write("parameters.prm", checkpoints.parameters_text);
       }
     // Where the results go (not in test mode: the path is the machine's).
     if (!test_mode)
@@ -201,9 +202,9 @@ namespace rupture
   void
   Simulator<dim>::run_sequence()
   {
-    wall_time_start      = MPI_Wtime();
-    last_checkpoint_wall = wall_time_start;
-    if (resume)
+    wall_time_start        = MPI_Wtime();
+    checkpoints.last_write = wall_time_start;
+    if (checkpoints.resume)
       run_continued();
     else
       run_from_start();
@@ -238,7 +239,7 @@ namespace rupture
         if (fault)
           fault->continue_dynamic_phase(state.clock.dynamic_start);
       }
-    integrator->load(checkpoint_records);
+    integrator->load(checkpoints.records);
     run_phases(state.clock.steps_in_phase);
   }
 
@@ -363,8 +364,8 @@ namespace rupture
                   time_parameters.end_time);
     state.clock.start_dynamic_phase(start);
     volume_output->start_series("solution", "solution.pvd");
-    next_output_time       = 0;
-    next_fault_output_time = 0;
+    output_schedule.next_output_time       = 0;
+    output_schedule.next_fault_output_time = 0;
     if (fault)
       {
         fault->start_dynamic_phase(start);
@@ -556,8 +557,8 @@ namespace rupture
         const bool ends_early = (reason != Termination::Reason::end_time);
 
         const bool stop = stop_when_weakening && fault->n_weakening() > 0;
-        if (state.step % screen_interval == 0 || i == n_steps || stop ||
-            ends_early)
+        if (state.step % output_schedule.screen_interval == 0 || i == n_steps ||
+            stop || ends_early)
           {
             pcout << "*** Step " << state.step << ": t = " << std::scientific
                   << std::setprecision(4) << state.clock.phase_time << " s"
@@ -596,9 +597,9 @@ namespace rupture
         // Every <Interval> steps, when write_step_output() found one asked
         // for (wall-clock interval, SIGUSR1), and at the end of the run.
         if (checkpoints_enabled() &&
-            ((checkpoint_interval > 0 &&
-              state.step % checkpoint_interval == 0) ||
-             checkpoint_requested || i == n_steps || ends_early))
+            ((checkpoints.interval > 0 &&
+              state.step % checkpoints.interval == 0) ||
+             checkpoints.requested || i == n_steps || ends_early))
           write_checkpoint();
         if (ends_early)
           {
@@ -726,17 +727,17 @@ namespace rupture
     // The third flag: a checkpoint is asked for (SIGUSR1 on any rank, or
     // rank 0's clock says <Checkpoint/Wall-clock interval> has passed),
     // written by run_phase() after this output.
-    int flags[3] = {Interruption::requested(),
-                    root && (MPI_Wtime() - last_table_write >= 60.),
-                    (Interruption::take_checkpoint_request() ||
-                     (root && checkpoint_minutes > 0 &&
-                      MPI_Wtime() - last_checkpoint_wall >=
-                        60 * checkpoint_minutes)) ?
-                      1 :
-                      0};
+    int flags[3] = {
+      Interruption::requested(),
+      root && (MPI_Wtime() - output_schedule.last_table_write >= 60.),
+      (Interruption::take_checkpoint_request() ||
+       (root && checkpoints.minutes > 0 &&
+        MPI_Wtime() - checkpoints.last_write >= 60 * checkpoints.minutes)) ?
+        1 :
+        0};
     MPI_Allreduce(MPI_IN_PLACE, flags, 3, MPI_INT, MPI_MAX, communicator);
-    const int signal     = flags[0];
-    checkpoint_requested = flags[2] != 0;
+    const int signal      = flags[0];
+    checkpoints.requested = flags[2] != 0;
 
     // The volume and the fault have intervals of their own: the fault's
     // files scale with the fault, so a large model may write its fault
@@ -747,9 +748,10 @@ namespace rupture
       return interval >= 0 &&
              (all || state.clock.phase_time >= next - 1e-9 * state.time_step);
     };
-    const bool volume_due = due(output_interval, next_output_time);
-    const bool fault_due =
-      fault && due(fault_output_interval, next_fault_output_time);
+    const bool volume_due =
+      due(output_schedule.interval, output_schedule.next_output_time);
+    const bool fault_due = fault && due(output_schedule.fault_interval,
+                                        output_schedule.next_fault_output_time);
 
     // Receiver series, the fault's tables and the statistics are small:
     // written at every output time, at the end and once a minute.
@@ -764,7 +766,8 @@ namespace rupture
                              ghosted_copy(1, state.velocity),
                              state.clock.phase_time,
                              state.step);
-        next_output_time = state.clock.phase_time + output_interval;
+        output_schedule.next_output_time =
+          state.clock.phase_time + output_schedule.interval;
       }
     if (fault_due)
       {
@@ -772,7 +775,8 @@ namespace rupture
                                     *output_directory,
                                     state.clock.phase_time,
                                     state.step);
-        next_fault_output_time = state.clock.phase_time + fault_output_interval;
+        output_schedule.next_fault_output_time =
+          state.clock.phase_time + output_schedule.fault_interval;
       }
     if (fault)
       fault_output->write_tables(*fault,
@@ -781,7 +785,7 @@ namespace rupture
                                  test_mode);
     if (root)
       statistics.write(output_directory->record("statistics"));
-    last_table_write = MPI_Wtime();
+    output_schedule.last_table_write = MPI_Wtime();
 
     if (signal != 0)
       {

@@ -11,11 +11,13 @@
 #include <rupture/operators/multigrid.h>
 #include <rupture/output/directory.h>
 #include <rupture/output/log.h>
+#include <rupture/output/output_schedule.h>
 #include <rupture/output/receivers.h>
 #include <rupture/output/statistics.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/scene/boundary_conditions.h>
 #include <rupture/scene/scene.h>
+#include <rupture/simulator/checkpoint_control.h>
 #include <rupture/simulator/termination.h>
 #include <rupture/solver/linear_solver.h>
 #include <rupture/solver/newton.h>
@@ -213,25 +215,11 @@ namespace rupture
     start_dynamic_phase_after_loading();
 
     // Checkpoints (checkpoint.cc).
-    /// <Checkpoint/Interval> (steps) and <Wall-clock interval> (minutes);
-    /// both 0: no checkpoints.
-    unsigned int checkpoint_interval  = 0;
-    double       checkpoint_minutes   = 0;
-    double       last_checkpoint_wall = 0;
-    /// Set by write_step_output(): a checkpoint is due after this step.
-    bool checkpoint_requested = false;
-    bool resume               = false;
-    /// The checkpoint a resumed run continues from (a directory).
-    std::string resume_from;
-    /// The run's parameters as written to parameters.prm (ShortPRM).
-    std::string parameters_text;
-    /// The named records read from a checkpoint; the time integrator's
-    /// are restored once the phase's integrator is prepared.
-    BinaryIO::Records checkpoint_records;
+    CheckpointControl checkpoints;
     bool
     checkpoints_enabled() const
     {
-      return checkpoint_interval > 0 || checkpoint_minutes > 0;
+      return checkpoints.interval > 0 || checkpoints.minutes > 0;
     }
     /// The newest complete checkpoint in the output directory, or "".
     std::string
@@ -466,14 +454,10 @@ namespace rupture
     /// Those cells and their stiffness (null without the zone).
     std::unique_ptr<Operators::FaultZoneDamping<dim>> fault_zone;
     double                                            gravity;
-    double                                            output_interval;
-    /// Simulated time between fault surface outputs (negative: none).
-    double                                          fault_output_interval = -1;
-    unsigned int                                    cells_per_output_piece;
-    std::vector<std::string>                        volume_fields;
-    typename Output::VolumeOutput<dim>::Compression output_compression;
-    unsigned int                                    screen_interval;
-    TimeIntegration::Parameters                     time_parameters;
+    unsigned int                                      cells_per_output_piece;
+    std::vector<std::string>                          volume_fields;
+    typename Output::VolumeOutput<dim>::Compression   output_compression;
+    TimeIntegration::Parameters                       time_parameters;
     /// The time integrator of the phase being run.
     std::unique_ptr<TimeIntegration::Interface<dim>> integrator;
     /// Its scheme.
@@ -583,16 +567,12 @@ namespace rupture
     double time_loop_seconds = 0;
     /// Resident memory (bytes, all ranks) after each set-up stage.
     std::vector<std::pair<std::string, double>> memory_by_stage;
-    double                                      next_output_time;
-    /// Wall time (MPI_Wtime) of the last write of the tables: receivers,
-    /// fault stations and statistics reach the disk at least once a
-    /// minute, whatever the output interval.
-    double last_table_write = 0;
+    /// When volume, fault surface, screen and tables are written.
+    Output::OutputSchedule output_schedule;
     /// The largest diagonal entry of the effective system (without the
     /// contact), set where the system is assembled: Newton's displacement
     /// scale for its round-off floor.
-    double max_system_diagonal    = 0;
-    double next_fault_output_time = 0;
+    double max_system_diagonal = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     /// Ghosted copies (locally relevant entries) with their exchange
