@@ -103,6 +103,8 @@ namespace rupture
   template <int dim>
   Simulator<dim>::~Simulator()
   {
+    // The integrator holds references into this object: it goes first.
+    integrator.reset();
     linear_solver.clear();
     // A run that stops with an error (a Newton or solver failure, a
     // non-finite value) still leaves the statistics of every step it
@@ -279,7 +281,8 @@ namespace rupture
             "Mean normal traction on the fault (Pa, < 0 in compression)",
             Output::Columns::mean_shear_traction})
         columns.push_back(c);
-    // Last, so that the columns before keep their numbers.
+    // Last, so that the columns before keep their numbers for scripts that
+    // read them by position (the program reads them by name).
     if (has_absorbing)
       columns.emplace_back("Energy absorbed at the absorbing boundaries (J): "
                            "part of the dissipated energy");

@@ -73,7 +73,7 @@ namespace rupture
    *
    * The work is split over several files, as in ASPECT: simulator.cc (set
    * up and time loop), assembly.cc (matrices and load vectors),
-   * time_stepping.cc (initial state, forces and the energy budget) and
+   * time_stepping.cc (initial state and energies, forces) and
    * newton.cc (the nonlinear solve of a step). The time integrators
    * (TimeIntegration::Interface, one class per scheme) step the state
    * through the contracts of their TimeIntegration::Context (the elastic
