@@ -1,5 +1,6 @@
 #include <rupture/base/utilities.h>
 #include <rupture/fault/fault.h>
+#include <rupture/fault/location_index.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -349,6 +350,21 @@ namespace rupture
         area_normal.compress(VectorOperation::add);
       }
 
+      // A set-up after the first keeps the committed state of every pair
+      // whose location is unchanged (on this process).
+      std::vector<NodePair>               previous;
+      std::unique_ptr<LocationIndex<dim>> previous_index;
+      if (set_up)
+        {
+          previous = std::move(pairs);
+          std::vector<Point<dim>> locations;
+          for (const auto &pair : previous)
+            locations.push_back(pair.location);
+          previous_index =
+            std::make_unique<LocationIndex<dim>>(locations,
+                                                 location_tolerance(previous));
+        }
+      unsigned int n_new = 0;
       pairs.clear();
       // A check that fails at one pair is reported by every process
       // (Utilities::throw_if_any()), not only by the one that owns it.
@@ -472,6 +488,14 @@ namespace rupture
                                 "slip in."));
                   pair.forced_direction /= pair.forced_direction.norm();
                 }
+              if (previous_index)
+                {
+                  const unsigned int j = previous_index->find(pair.location);
+                  if (j != LocationIndex<dim>::invalid)
+                    carry_state(previous[j], pair);
+                  else
+                    ++n_new;
+                }
               pairs.push_back(pair);
             }
           catch (const ExceptionBase &e)
@@ -526,6 +550,7 @@ namespace rupture
                                     communicator);
       n_global_welded =
         dealii::Utilities::MPI::sum(n_welded_owned, communicator);
+      n_global_new = dealii::Utilities::MPI::sum(n_new, communicator);
       const unsigned int n_faces =
         dealii::Utilities::MPI::sum(n_interface_faces, communicator);
       AssertThrow(n_faces > 0,
@@ -533,6 +558,40 @@ namespace rupture
                              "plus side touches a cell of the minus side. "
                              "Check <Fault/Plus side> and its plane or "
                              "material ids."));
+      // The traction of a perturbation at the present time.
+      if (set_up)
+        set_time(current_time);
+      set_up = true;
+    }
+
+
+
+    template <int dim>
+    double
+    Fault<dim>::location_tolerance(const std::vector<NodePair> &of) const
+    {
+      // A millionth of the smallest node spacing (the tributary length,
+      // or the root of the tributary area, of a pair).
+      double spacing = std::numeric_limits<double>::max();
+      for (const auto &pair : of)
+        spacing =
+          std::min(spacing, std::pow(pair.area, 1. / std::max(dim - 1, 1)));
+      spacing = dealii::Utilities::MPI::min(spacing, communicator);
+      return 1e-6 * spacing;
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::carry_state(const NodePair &from, NodePair &to)
+    {
+      static_cast<NodeState<dim> &>(to) =
+        static_cast<const NodeState<dim> &>(from);
+      to.trial               = from.trial;
+      to.trial_slip          = from.trial_slip;
+      to.trial_state         = from.trial_state;
+      to.trial_slip_velocity = from.trial_slip_velocity;
     }
 
 

@@ -4,6 +4,7 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/fault/fault.h>
+#include <rupture/fault/location_index.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -376,29 +377,6 @@ namespace rupture
 
 
 
-    namespace
-    {
-      template <int dim>
-      void
-      append(std::vector<double> &v, const Tensor<1, dim> &t)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          v.push_back(t[d]);
-      }
-
-      template <int dim>
-      Tensor<1, dim>
-      take(const std::vector<double> &v, unsigned int &i)
-      {
-        Tensor<1, dim> t;
-        for (unsigned int d = 0; d < dim; ++d)
-          t[d] = v.at(i++);
-        return t;
-      }
-    } // namespace
-
-
-
     template <int dim>
     void
     Fault<dim>::save(std::ostream &out) const
@@ -415,30 +393,19 @@ namespace rupture
           v.clear();
           for (unsigned int d = 0; d < dim; ++d)
             v.push_back(pair.location[d]);
-          v.push_back(pair.state.slip_path);
-          v.push_back(pair.state.slip_rate);
-          v.push_back(pair.state.variables.size());
-          v.insert(v.end(),
-                   pair.state.variables.begin(),
-                   pair.state.variables.end());
-          append(v, pair.plastic_slip);
-          append(v, pair.slip);
-          append(v, pair.slip_velocity);
-          v.push_back(pair.rupture_time);
-          v.push_back(pair.rupture_rate);
-          append(v, pair.slip_at_start);
+          pair.NodeState<dim>::append_to(v);
           const auto &t = pair.trial;
-          append(v, t.traction);
-          append(v, t.trial_traction);
+          NodeState<dim>::append(v, t.traction);
+          NodeState<dim>::append(v, t.trial_traction);
           for (unsigned int d = 0; d < dim; ++d)
-            append(v, t.tangent[d]);
+            NodeState<dim>::append(v, t.tangent[d]);
           v.push_back(static_cast<double>(t.status));
           v.push_back(t.slip_increment);
-          append(v, t.plastic_slip);
+          NodeState<dim>::append(v, t.plastic_slip);
           v.push_back(t.friction);
           v.push_back(t.friction_derivative);
           v.push_back(t.unstable_softening);
-          append(v, pair.trial_slip);
+          NodeState<dim>::append(v, pair.trial_slip);
           BinaryIO::write(out, v);
         }
     }
@@ -453,8 +420,9 @@ namespace rupture
         dealii::Utilities::MPI::this_mpi_process(communicator);
       const bool same_ranks =
         files.size() == dealii::Utilities::MPI::n_mpi_processes(communicator);
-      std::map<std::array<double, dim>, std::vector<double>> saved;
-      double                                                 energy = 0;
+      std::vector<Point<dim>>          saved_locations;
+      std::vector<std::vector<double>> saved;
+      double                           energy = 0;
       for (unsigned int f = 0; f < files.size(); ++f)
         {
           std::ifstream in(files[f], std::ios::binary);
@@ -482,19 +450,22 @@ namespace rupture
               AssertThrow(v.size() > dim,
                           ExcMessage("The checkpoint file <" + files[f] +
                                      "> is damaged."));
-              std::array<double, dim> key;
-              std::copy(v.begin(), v.begin() + dim, key.begin());
-              saved[key] = v;
+              Point<dim> location;
+              for (unsigned int d = 0; d < dim; ++d)
+                location[d] = v[d];
+              saved_locations.push_back(location);
+              saved.push_back(v);
             }
         }
       frictional_energy = energy;
+      // Pairs are found by location (the DoFs change with the number of
+      // processes).
+      const LocationIndex<dim> index(saved_locations,
+                                     location_tolerance(pairs));
       for (auto &pair : pairs)
         {
-          std::array<double, dim> key;
-          for (unsigned int d = 0; d < dim; ++d)
-            key[d] = pair.location[d];
-          const auto at = saved.find(key);
-          if (at == saved.end())
+          const unsigned int at = index.find(pair.location);
+          if (at == LocationIndex<dim>::invalid)
             {
               std::ostringstream where;
               where << pair.location;
@@ -505,31 +476,21 @@ namespace rupture
                                      "): it was written for another mesh "
                                      "or fault."));
             }
-          const std::vector<double> &v = at->second;
+          const std::vector<double> &v = saved[at];
           unsigned int               i = dim;
-          pair.state.slip_path         = v.at(i++);
-          pair.state.slip_rate         = v.at(i++);
-          pair.state.variables.resize(static_cast<unsigned int>(v.at(i++)));
-          for (auto &x : pair.state.variables)
-            x = v.at(i++);
-          pair.plastic_slip  = take<dim>(v, i);
-          pair.slip          = take<dim>(v, i);
-          pair.slip_velocity = take<dim>(v, i);
-          pair.rupture_time  = v.at(i++);
-          pair.rupture_rate  = v.at(i++);
-          pair.slip_at_start = take<dim>(v, i);
-          auto &t            = pair.trial;
-          t.traction         = take<dim>(v, i);
-          t.trial_traction   = take<dim>(v, i);
+          pair.NodeState<dim>::read_from(v, i);
+          auto &t          = pair.trial;
+          t.traction       = NodeState<dim>::take(v, i);
+          t.trial_traction = NodeState<dim>::take(v, i);
           for (unsigned int d = 0; d < dim; ++d)
-            t.tangent[d] = take<dim>(v, i);
+            t.tangent[d] = NodeState<dim>::take(v, i);
           t.status              = static_cast<ContactStatus>(v.at(i++));
           t.slip_increment      = v.at(i++);
-          t.plastic_slip        = take<dim>(v, i);
+          t.plastic_slip        = NodeState<dim>::take(v, i);
           t.friction            = v.at(i++);
           t.friction_derivative = v.at(i++);
           t.unstable_softening  = v.at(i++) != 0;
-          pair.trial_slip       = take<dim>(v, i);
+          pair.trial_slip       = NodeState<dim>::take(v, i);
         }
     }
 

@@ -3,6 +3,7 @@
 
 #include <rupture/base/sparse_gather.h>
 #include <rupture/fault/contact.h>
+#include <rupture/fault/node_state.h>
 #include <rupture/friction/interface.h>
 #include <rupture/operators/pair_blocks.h>
 
@@ -122,6 +123,13 @@ namespace rupture
        * welded ones, add the welding constraints u+ = u- to
        * @p constraints (not yet closed), and compute the nodes' areas and
        * normals.
+       *
+       * The first set-up starts every pair from the initial state (the
+       * initial traction, the friction law's initial state). A set-up
+       * after it (on a new mesh, or the same one again) keeps the committed
+       * state of every pair at a location where this process had a pair
+       * before (LocationIndex); the others start from the initial state
+       * and are counted by n_new_pairs().
        */
       void
       setup(const DoFHandler<dim>     &dof_handler,
@@ -413,6 +421,17 @@ namespace rupture
       n_welded_nodes() const;
 
       /**
+       * The pairs of the last set-up that had no pair at their location
+       * before it, over all processes (all of them at the first set-up:
+       * 0 is returned then).
+       */
+      unsigned int
+      n_new_pairs() const
+      {
+        return n_global_new;
+      }
+
+      /**
        * Whether a cell with the DoFs @p cell_dofs has a node of the fault
        * region (a split or penalty node pair, not a welded one) among its
        * nodes: the cells that touch the fault, also by an edge or a
@@ -435,38 +454,11 @@ namespace rupture
       }
 
     private:
-      struct NodePair
+      /// A node pair: its topology, the parameters at its location, its
+      /// committed state (node_state.h) and the trial state of the last
+      /// assemble().
+      struct NodePair : PairTopology<dim>, PairData<dim>, NodeState<dim>
       {
-        std::array<types::global_dof_index, dim> minus;
-        std::array<types::global_dof_index, dim> plus;
-        Point<dim>                               location;
-        double                                   area = 0;
-        Tensor<1, dim>                           normal;
-        /// The traction the displacement does not carry: the initial
-        /// traction plus the perturbation at the current time.
-        Tensor<1, dim> initial_traction;
-        /// <Fault/Initial traction> here, and <Fault/Traction
-        /// perturbation/Traction>.
-        Tensor<1, dim> background_traction;
-        Tensor<1, dim> perturbation;
-        double         normal_penalty     = 0;
-        double         tangential_penalty = 0;
-        double         shear_modulus      = 0;
-        // Committed state.
-        Friction::State state;
-        Tensor<1, dim>  plastic_slip;
-        Tensor<1, dim>  slip;
-        Tensor<1, dim>  slip_velocity;
-        double          rupture_time = -1;
-        /// The slip rate that the rupture time is measured on, at the end
-        /// of the last step (see commit()).
-        double rupture_rate = 0;
-        /// Slip at the start of the dynamic phase: output and statistics
-        /// count the slip from there (coseismic slip).
-        Tensor<1, dim> slip_at_start;
-        /// Slip imposed (Fault/Forced slip) instead of friction.
-        bool           forced = false;
-        Tensor<1, dim> forced_direction;
         // Trial state of the last assemble().
         ContactResponse<dim> trial;
         Tensor<1, dim>       trial_slip;
@@ -480,6 +472,21 @@ namespace rupture
 
       Point<3>
       to_3d(const Point<dim> &p) const;
+
+      /**
+       * The distance below which two locations of fault nodes are the same
+       * node (LocationIndex): a millionth of the smallest node spacing of
+       * the pairs @p of on all processes.
+       */
+      double
+      location_tolerance(const std::vector<NodePair> &of) const;
+
+      /**
+       * Give @p to, a pair of a new set-up at the location of @p from, the
+       * committed and the trial state of @p from.
+       */
+      static void
+      carry_state(const NodePair &from, NodePair &to);
 
       /// The interface of a DoFHandler: split and welded nodes (keyed by
       /// their minus DoF of component 0), fault faces.
@@ -607,7 +614,12 @@ namespace rupture
       double                            initial_force_scale = 0;
       unsigned int                      n_global_split      = 0;
       unsigned int                      n_global_welded     = 0;
-      double                            frictional_energy   = 0;
+      /// Pairs of the last set-up without a pair at their location before
+      /// it (all but the first set-up), over all processes.
+      unsigned int n_global_new = 0;
+      /// True after the first set-up.
+      bool   set_up            = false;
+      double frictional_energy = 0;
     };
   } // namespace Fault
 } // namespace rupture
