@@ -364,7 +364,7 @@ namespace rupture
             std::make_unique<LocationIndex<dim>>(locations,
                                                  location_tolerance(previous));
         }
-      unsigned int n_new = 0;
+      new_pair_indices.clear();
       pairs.clear();
       // A check that fails at one pair is reported by every process
       // (Utilities::throw_if_any()), not only by the one that owns it.
@@ -494,7 +494,7 @@ namespace rupture
                   if (j != LocationIndex<dim>::invalid)
                     carry_state(previous[j], pair);
                   else
-                    ++n_new;
+                    new_pair_indices.push_back(pairs.size());
                 }
               pairs.push_back(pair);
             }
@@ -550,7 +550,8 @@ namespace rupture
                                     communicator);
       n_global_welded =
         dealii::Utilities::MPI::sum(n_welded_owned, communicator);
-      n_global_new = dealii::Utilities::MPI::sum(n_new, communicator);
+      n_global_new = dealii::Utilities::MPI::sum(
+        static_cast<unsigned int>(new_pair_indices.size()), communicator);
       const unsigned int n_faces =
         dealii::Utilities::MPI::sum(n_interface_faces, communicator);
       AssertThrow(n_faces > 0,

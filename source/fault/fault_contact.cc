@@ -213,7 +213,7 @@ namespace rupture
           const double rate = split_node_method ?
                                 updated.slip_rate :
                                 pair.trial.slip_increment / dt;
-          if (pair.rupture_time < 0 && rate > 1e-3)
+          if (pair.rupture_time == NodeState<dim>::not_ruptured && rate > 1e-3)
             {
               const double w = (1e-3 - pair.rupture_rate) /
                                std::max(rate - pair.rupture_rate, 1e-300);

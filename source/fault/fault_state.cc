@@ -302,7 +302,7 @@ namespace rupture
           max_slip          = std::max(max_slip, slip);
           max_rate          = std::max(max_rate, pair.state.slip_rate);
           moment += pair.shear_modulus * pair.area * slip;
-          if (pair.rupture_time >= 0)
+          if (pair.rupture_time != NodeState<dim>::not_ruptured)
             {
               ruptured[0] += pair.area;
               ruptured[1] += pair.area * slip;

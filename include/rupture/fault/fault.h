@@ -421,6 +421,33 @@ namespace rupture
       n_welded_nodes() const;
 
       /**
+       * The state of the locally owned pairs as finite element fields of
+       * the DoFHandler of the last set-up (entries at both DoFs of every
+       * pair, zero elsewhere; without ghost entries), for
+       * parallel::distributed::SolutionTransfer to carry to a refined,
+       * coarsened or repartitioned mesh. After the new set-up,
+       * interpolate_new_pairs() reads the transferred fields.
+       */
+      std::vector<VectorType>
+      state_fields(const IndexSet &locally_owned_dofs) const;
+
+      /**
+       * Give every new pair of the last set-up (n_new_pairs()) the state
+       * in @p fields, the fields of state_fields() transferred to the new
+       * mesh: along the fault faces, the old nodes' values interpolated
+       * (the state variables that the friction law says span decades in
+       * their logarithm), divided by the interpolated weight of the pairs
+       * (so that welded nodes next to the fault region do not count). The
+       * rupture time is not interpolated: a node that existed before keeps
+       * its own, a node between old ones gets NodeState::unknown_time if
+       * the rupture had reached an old neighbour. Returns the number of
+       * new pairs with no old pair near (they keep the initial state), over
+       * all processes.
+       */
+      unsigned int
+      interpolate_new_pairs(const std::vector<VectorType> &fields);
+
+      /**
        * The pairs of the last set-up that had no pair at their location
        * before it, over all processes (all of them at the first set-up:
        * 0 is returned then).
@@ -480,6 +507,21 @@ namespace rupture
        */
       double
       location_tolerance(const std::vector<NodePair> &of) const;
+
+      /// The number of values state_fields() holds per pair.
+      unsigned int
+      n_transfer_values() const;
+
+      /// The length scale of location_mark(): a thousandth of the fault's
+      /// extent.
+      double
+      transfer_length() const;
+
+      /// A smooth function of the location that no interpolation between
+      /// other nodes reproduces: tells the nodes that existed before from
+      /// new ones after a transfer.
+      static double
+      location_mark(const Point<dim> &x, const double length);
 
       /**
        * Give @p to, a pair of a new set-up at the location of @p from, the
@@ -617,6 +659,8 @@ namespace rupture
       /// Pairs of the last set-up without a pair at their location before
       /// it (all but the first set-up), over all processes.
       unsigned int n_global_new = 0;
+      /// The indices in pairs of the new pairs of the last set-up.
+      std::vector<unsigned int> new_pair_indices;
       /// True after the first set-up.
       bool   set_up            = false;
       double frictional_energy = 0;

@@ -70,9 +70,16 @@ namespace rupture
       Tensor<1, dim>  plastic_slip;
       Tensor<1, dim>  slip;
       Tensor<1, dim>  slip_velocity;
+      /// rupture_time before the pair ruptures.
+      static constexpr double not_ruptured = -1;
+      /// rupture_time of a pair that a changed mesh added where the rupture
+      /// had passed its neighbours: its own rupture time is unknown (the
+      /// statistics count it as ruptured, outputs as not ruptured).
+      static constexpr double unknown_time = -2;
+
       /// The first time (since the start of the dynamic phase) the slip
-      /// rate exceeded 1 mm/s, -1 before.
-      double rupture_time = -1;
+      /// rate exceeded 1 mm/s, not_ruptured before, or unknown_time.
+      double rupture_time = not_ruptured;
       /// The slip rate that the rupture time is measured on, at the end of
       /// the last step (see Fault::commit()).
       double rupture_rate = 0;

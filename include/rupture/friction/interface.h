@@ -220,6 +220,21 @@ namespace rupture
       }
 
       /**
+       * Whether state variable @p i interpolates in its logarithm when the
+       * fault's state moves to new nodes of a changed mesh
+       * (Fault::interpolate_new_pairs()): true for positive variables that
+       * span decades (the theta of the aging and slip laws), false for
+       * those that interpolate as they are (psi, temperatures, additive
+       * states).
+       */
+      virtual bool
+      state_interpolates_in_logarithm(const unsigned int i) const
+      {
+        (void)i;
+        return false;
+      }
+
+      /**
        * Whether the friction coefficient depends on the slip rate (the slip
        * increment over dt) and not only on the slip path: rate-and-state
        * laws.

@@ -77,6 +77,12 @@ namespace rupture
         return true;
       }
 
+      bool
+      state_interpolates_in_logarithm(const unsigned int i) const override
+      {
+        return i == 0;
+      }
+
       std::vector<std::string>
       state_names() const override
       {
