@@ -349,6 +349,39 @@ namespace rupture
           }
         area_normal.compress(VectorOperation::add);
       }
+      // Pairs on hanging nodes (a fault face finer than its neighbour on
+      // both sides). Their displacements follow the pairs they hang from.
+      // With penalty contact each keeps its own contact and area, and the
+      // constraints carry its force to those pairs. The split-node method
+      // keeps the tractions at free pairs only: a hanging pair passes its
+      // area to the pairs it hangs from (the area of their constrained
+      // shape functions) and its traction is theirs interpolated.
+      AffineConstraints<double> hanging;
+      hanging.copy_from(constraints);
+      hanging.close();
+      {
+        unsigned int n_hanging = 0;
+        for (const auto &[key, pair] : fault_nodes)
+          if (locally_owned_dofs.is_element(pair.minus[0]) &&
+              hanging.is_constrained(pair.minus[0]))
+            ++n_hanging;
+        any_hanging = dealii::Utilities::MPI::sum(n_hanging, communicator) > 0;
+      }
+      if (split_node_method && any_hanging)
+        {
+          VectorType passed(locally_owned_dofs, communicator);
+          for (const auto &[key, pair] : fault_nodes)
+            if (locally_owned_dofs.is_element(pair.minus[0]) &&
+                hanging.is_constrained(pair.minus[0]))
+              for (unsigned int c = 0; c < dim; ++c)
+                for (const auto &[master, weight] :
+                     *hanging.get_constraint_entries(pair.minus[c]))
+                  passed.add(std::vector<types::global_dof_index>{master},
+                             std::vector<double>{weight *
+                                                 area_normal(pair.minus[c])});
+          passed.compress(VectorOperation::add);
+          area_normal += passed;
+        }
 
       // A set-up after the first keeps the committed state of every pair
       // whose location is unchanged (on this process).
@@ -378,6 +411,19 @@ namespace rupture
               pair.area = pair.normal.norm();
               AssertThrow(pair.area > 0, ExcInternalError());
               pair.normal /= pair.area;
+              pair.hanging = hanging.is_constrained(pair.minus[0]);
+              {
+                std::ostringstream where;
+                where << pair.location;
+                AssertThrow(pair.hanging ==
+                              hanging.is_constrained(pair.plus[0]),
+                            ExcMessage("The fault node at (" + where.str() +
+                                       ") hangs on one side of the fault "
+                                       "only: the cells on both sides of a "
+                                       "fault face must be refined alike."));
+              }
+              if (split_node_method && pair.hanging)
+                pair.area = 0;
               const Point<3> x = to_3d(pair.location);
               for (unsigned int c = 0; c < dim; ++c)
                 pair.initial_traction[c] =
@@ -507,23 +553,38 @@ namespace rupture
       {
         // The split-node method and the matrix-free contact tangent read
         // and write the pairs' DoFs alone (minus side then plus side, dim
-        // entries each, pair by pair). The split-node forces go straight
-        // to the DoFs, so none may be constrained there (hanging nodes on
-        // the fault are not supported).
+        // entries each, pair by pair).
         std::vector<types::global_dof_index> indices;
-        bool                                 constrained = false;
         for (const auto &pair : pairs)
           for (const auto *side : {&pair.minus, &pair.plus})
             for (const auto dof : *side)
-              {
-                indices.push_back(dof);
-                constrained = constrained || constraints.is_constrained(dof);
-              }
+              indices.push_back(dof);
         pair_dofs.reinit(locally_owned_dofs, indices, communicator);
         std::vector<typename Operators::PairBlocks<dim>::PairDofs> pair_list;
         for (const auto &pair : pairs)
           pair_list.emplace_back(pair.minus, pair.plus);
         contact_blocks.reinit(pair_list, locally_owned_dofs, communicator);
+        if (!split_node_method && any_hanging)
+          {
+            // The matrix-free contact tangent of the pairs on hanging
+            // nodes acts through the nodes they follow.
+            std::vector<
+              std::tuple<unsigned int, types::global_dof_index, double>>
+              entries;
+            for (unsigned int k = 0; k < pairs.size(); ++k)
+              if (pairs[k].hanging)
+                for (unsigned int s = 0; s < 2; ++s)
+                  for (unsigned int c = 0; c < dim; ++c)
+                    for (const auto &[master, weight] :
+                         *hanging.get_constraint_entries(
+                           s == 0 ? pairs[k].minus[c] : pairs[k].plus[c]))
+                      entries.emplace_back(2 * dim * k + s * dim + c,
+                                           master,
+                                           weight);
+            contact_blocks.set_hanging(entries,
+                                       locally_owned_dofs,
+                                       communicator);
+          }
         // The nodal forces A T_0 on both sides of every pair.
         double force_square = 0;
         for (const auto &pair : pairs)
@@ -531,14 +592,24 @@ namespace rupture
             2 * pair.area * pair.area * pair.initial_traction.norm_square();
         initial_force_scale =
           std::sqrt(dealii::Utilities::MPI::sum(force_square, communicator));
-        if (split_node_method)
-          AssertThrow(dealii::Utilities::MPI::max(constrained ? 1 : 0,
-                                                  communicator) == 0,
-                      ExcMessage("The fault's split nodes lie on hanging "
-                                 "nodes: the traction-at-split-node method "
-                                 "needs the same refinement on both sides "
-                                 "of the fault and along it. Refine the "
-                                 "mesh globally."));
+        // The split-node method interpolates the traction of a hanging
+        // pair from the minus DoFs it follows.
+        hanging_sources.clear();
+        if (split_node_method && any_hanging)
+          {
+            std::vector<types::global_dof_index> masters;
+            for (unsigned int k = 0; k < pairs.size(); ++k)
+              if (pairs[k].hanging)
+                for (unsigned int c = 0; c < dim; ++c)
+                  for (const auto &[master, weight] :
+                       *hanging.get_constraint_entries(pairs[k].minus[c]))
+                    {
+                      hanging_sources.push_back({k, c, weight});
+                      masters.push_back(master);
+                    }
+            hanging_gather.reinit(locally_owned_dofs, masters, communicator);
+            traction_change.reinit(locally_owned_dofs, communicator);
+          }
       }
 
       unsigned int n_welded_owned = 0;
@@ -575,8 +646,9 @@ namespace rupture
       // or the root of the tributary area, of a pair).
       double spacing = std::numeric_limits<double>::max();
       for (const auto &pair : of)
-        spacing =
-          std::min(spacing, std::pow(pair.area, 1. / std::max(dim - 1, 1)));
+        if (pair.area > 0)
+          spacing =
+            std::min(spacing, std::pow(pair.area, 1. / std::max(dim - 1, 1)));
       spacing = dealii::Utilities::MPI::min(spacing, communicator);
       return 1e-6 * spacing;
     }

@@ -30,7 +30,7 @@ namespace rupture
     template <int dim>
     unsigned int
     Fault<dim>::side(
-      const typename DoFHandler<dim>::active_cell_iterator &cell) const
+      const typename Triangulation<dim>::cell_iterator &cell) const
     {
       if (side_by_plane)
         return ((cell->center() - plane_point) * plane_normal > 0) ? 1 : 0;
@@ -281,17 +281,31 @@ namespace rupture
 
     template <int dim>
     void
-    Fault<dim>::add_sparsity(DynamicSparsityPattern &dsp) const
+    Fault<dim>::add_sparsity(DynamicSparsityPattern          &dsp,
+                             const AffineConstraints<double> &constraints) const
     {
+      std::vector<types::global_dof_index> dofs(2 * dim);
       for (const auto &pair : pairs)
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            {
-              dsp.add(pair.minus[a], pair.plus[b]);
-              dsp.add(pair.plus[a], pair.minus[b]);
-              dsp.add(pair.minus[a], pair.minus[b]);
-              dsp.add(pair.plus[a], pair.plus[b]);
-            }
+        if (pair.hanging)
+          {
+            // The pair's coupling, condensed onto the nodes that its
+            // hanging nodes follow.
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                dofs[c]       = pair.minus[c];
+                dofs[dim + c] = pair.plus[c];
+              }
+            constraints.add_entries_local_to_global(dofs, dsp, true);
+          }
+        else
+          for (unsigned int a = 0; a < dim; ++a)
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                dsp.add(pair.minus[a], pair.plus[b]);
+                dsp.add(pair.plus[a], pair.minus[b]);
+                dsp.add(pair.minus[a], pair.minus[b]);
+                dsp.add(pair.plus[a], pair.plus[b]);
+              }
     }
 
 

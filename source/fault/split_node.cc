@@ -216,7 +216,18 @@ namespace rupture
           r.friction =
             friction_law->coefficient(x, pair.state, increment, dt, dm);
           r.friction_derivative = dm;
-          const double tn       = T * n;
+          if (pair.hanging)
+            {
+              // No traction of its own: that of the pairs it follows
+              // (interpolate_hanging_tractions()).
+              r.traction      = pair.initial_traction;
+              pair.trial      = r;
+              pair.trial_slip = slip;
+              for (unsigned int d = 0; d < dim; ++d)
+                forces[m0 + d] = forces[p0 + d] = 0;
+              continue;
+            }
+          const double tn = T * n;
           if (tn > 0)
             {
               r.status = ContactStatus::open;
@@ -256,7 +267,56 @@ namespace rupture
               forces[p0 + d] = pair.area * dT[d];
             }
         }
+      if (any_hanging)
+        interpolate_hanging_tractions();
       pair_dofs.scatter_add(forces, force.trilinos_vector()[0]);
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::interpolate_hanging_tractions()
+    {
+      traction_change = 0;
+      for (const auto &pair : pairs)
+        if (!pair.hanging)
+          for (unsigned int c = 0; c < dim; ++c)
+            traction_change(pair.minus[c]) =
+              pair.trial.traction[c] - pair.initial_traction[c];
+      traction_change.compress(VectorOperation::insert);
+      std::vector<double> values;
+      hanging_gather.gather(traction_change.trilinos_vector()[0], values);
+      std::vector<Tensor<1, dim>> change(pairs.size());
+      for (unsigned int i = 0; i < hanging_sources.size(); ++i)
+        change[hanging_sources[i].pair][hanging_sources[i].component] +=
+          hanging_sources[i].weight * values[i];
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        if (pairs[k].hanging)
+          {
+            NodePair      &pair = pairs[k];
+            Tensor<1, dim> T    = pair.initial_traction + change[k];
+            const double   tn   = T * pair.normal;
+            auto          &r    = pair.trial;
+            if (tn > 0)
+              {
+                r.status = ContactStatus::open;
+                T        = 0;
+              }
+            else
+              {
+                const double strength =
+                  std::max(r.friction * (-tn) +
+                             friction_law->cohesion(to_3d(pair.location),
+                                                    pair.state),
+                           0.);
+                r.status =
+                  (T - tn * pair.normal).norm() >= (1 - 1e-6) * strength ?
+                    ContactStatus::slip :
+                    ContactStatus::stick;
+              }
+            r.traction = T;
+          }
     }
 
 

@@ -27,6 +27,29 @@ namespace rupture
       exchange.reinit(owned, indices, communicator);
       inverses.clear();
       point_inverses.clear();
+      hanging_slots.clear();
+      hanging_active = false;
+    }
+
+
+
+    template <int dim>
+    void
+    PairBlocks<dim>::set_hanging(
+      const std::vector<
+        std::tuple<unsigned int, types::global_dof_index, double>> &entries,
+      const IndexSet                                               &owned,
+      const MPI_Comm communicator)
+    {
+      hanging_slots.clear();
+      std::vector<types::global_dof_index> masters;
+      for (const auto &[slot, master, weight] : entries)
+        {
+          hanging_slots.emplace_back(slot, weight);
+          masters.push_back(master);
+        }
+      hanging_exchange.reinit(owned, masters, communicator);
+      hanging_active = true;
     }
 
 
@@ -36,6 +59,17 @@ namespace rupture
     PairBlocks<dim>::apply(const double *x, double *y) const
     {
       exchange.gather(x, values);
+      const bool hanging = hanging_active;
+      if (hanging)
+        {
+          // A hanging entry's value is its masters' (x is zero there).
+          hanging_exchange.gather(x, hanging_values);
+          for (unsigned int i = 0; i < hanging_slots.size(); ++i)
+            values[hanging_slots[i].first] = 0;
+          for (unsigned int i = 0; i < hanging_slots.size(); ++i)
+            values[hanging_slots[i].first] +=
+              hanging_slots[i].second * hanging_values[i];
+        }
       for (unsigned int k = 0; k < pair_dofs.size(); ++k)
         {
           // [D, -D; -D, D] (x-, x+): -D j and D j, with the jump
@@ -49,6 +83,17 @@ namespace rupture
               values[n * k + d]       = -f[d];
               values[n * k + dim + d] = f[d];
             }
+        }
+      if (hanging)
+        {
+          // Its product goes to its masters (its own row is the
+          // identity's, set by the caller).
+          for (unsigned int i = 0; i < hanging_slots.size(); ++i)
+            hanging_values[i] =
+              hanging_slots[i].second * values[hanging_slots[i].first];
+          for (unsigned int i = 0; i < hanging_slots.size(); ++i)
+            values[hanging_slots[i].first] = 0;
+          hanging_exchange.scatter_add(hanging_values, y);
         }
       exchange.scatter_add(values, y);
     }

@@ -60,9 +60,13 @@ namespace rupture
         "3-D, z) positive are refined <Refinement region levels> more times "
         "after the global refinement, e.g. 'x < 1000 ? 1 : 0' or "
         "'abs(z) < 5000'. Neighbouring cells differ by at most one level; "
-        "the hanging nodes between them are constrained. The fault must be "
-        "refined alike on both sides: a region that ends on the fault is "
-        "an error.");
+        "the hanging nodes between them are constrained. The fault is "
+        "refined alike on both sides: where the region takes a cell next "
+        "to the fault, the cell across the fault is refined with it. In "
+        "3-D the fault may then be finer in some parts than in others: "
+        "its nodes on the border of a finer part hang and follow the "
+        "nodes around them (with either <Fault/Model>). The multigrid "
+        "preconditioner needs this region off (0).");
       prm.declare_entry("Refinement region levels",
                         "0",
                         Patterns::Integer(0, 6),

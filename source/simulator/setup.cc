@@ -94,6 +94,37 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::refine_fault_alike()
+  {
+    // The mesh's 2:1 balance may refine a cell on one side of the fault
+    // only: refine its neighbour across until both sides match.
+    for (unsigned int pass = 0; pass < 2 * n_region_refinements + 2; ++pass)
+      {
+        bool flagged = false;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            for (const auto f : cell->face_indices())
+              if (!cell->at_boundary(f) && cell->neighbor(f)->has_children())
+                for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+                  {
+                    const auto child = cell->neighbor_child_on_subface(f, c);
+                    if (fault->side(child) != fault->side(cell) &&
+                        !cell->refine_flag_set())
+                      {
+                        cell->set_refine_flag();
+                        flagged = true;
+                      }
+                  }
+        if (dealii::Utilities::MPI::max(flagged ? 1 : 0, communicator) == 0)
+          return;
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::make_mesh()
   {
     TimerOutput::Scope t(timer, "Set up mesh");
@@ -136,6 +167,16 @@ namespace rupture
                 }
               if (value > 0)
                 cell->set_refine_flag();
+              // Both cells of a fault face are refined alike: where the
+              // region covers one, the other is flagged too (evaluated
+              // here, where that cell may be another process's).
+              if (fault && !cell->refine_flag_set())
+                for (const auto f : cell->face_indices())
+                  if (!cell->at_boundary(f) &&
+                      !cell->neighbor(f)->has_children() &&
+                      fault->side(cell->neighbor(f)) != fault->side(cell) &&
+                      refinement_region->value(cell->neighbor(f)->center()) > 0)
+                    cell->set_refine_flag();
             }
         // Every process stops, not only the one that found the value.
         AssertThrow(dealii::Utilities::MPI::max(bad_centre.empty() ? 0 : 1,
@@ -149,6 +190,8 @@ namespace rupture
                                ". Allowed are expressions that are finite "
                                "everywhere in the model."));
         triangulation.execute_coarsening_and_refinement();
+        if (fault)
+          refine_fault_alike();
       }
 
     std::vector<double> cells_per_material(materials.n_materials(), 0.);
@@ -295,7 +338,7 @@ namespace rupture
                                         hanging_constraints,
                                         true);
         if (fault)
-          fault->add_sparsity(dsp);
+          fault->add_sparsity(dsp, hanging_constraints);
         SparsityTools::distribute_sparsity_pattern(dsp,
                                                    locally_owned_dofs,
                                                    communicator,

@@ -122,10 +122,6 @@ main(int argc, char **argv)
           "= 32\n  end\nend\n"
           "subsection Boundary conditions\n  set Traction = top: 1e6; "
           "-1e7\nend\nset Output directory = failed-run\n");
-  write("refined_fault.prm",
-        base + fault +
-          "end\nsubsection Discretization\n  set Refinement region = y < "
-          "500 ? 1 : 0\n  set Refinement region levels = 1\nend\n");
   write("refinement_region_nan.prm",
         base + "subsection Discretization\n  set Refinement region = log(x - "
                "2000)\n  set Refinement region levels = 1\nend\n");
@@ -228,7 +224,6 @@ main(int argc, char **argv)
   check("mu_0 below mu_d", {"fault_friction.prm"});
   check("forced slip normal to the fault", {"forced_direction.prm"});
   check("linear solve that does not converge", {"solver_fails.prm"});
-  check("refinement region that ends on the fault", {"refined_fault.prm"});
   check("refinement region that is not finite", {"refinement_region_nan.prm"});
   check("more than 1e9 time steps",
         {"valid.prm", "--set", "Time integration/End time=1e9"});

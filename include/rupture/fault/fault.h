@@ -116,7 +116,7 @@ namespace rupture
        * The side (0 = minus, 1 = plus) of a cell.
        */
       unsigned int
-      side(const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+      side(const typename Triangulation<dim>::cell_iterator &cell) const;
 
       /**
        * After the DoFs are distributed: find the split node pairs and the
@@ -160,10 +160,12 @@ namespace rupture
       pair_tangents() const;
 
       /**
-       * Add the coupling between the two nodes of each pair.
+       * Add the coupling between the two nodes of each pair (for a pair on
+       * hanging nodes, between the nodes they follow by @p constraints).
        */
       void
-      add_sparsity(DynamicSparsityPattern &dsp) const;
+      add_sparsity(DynamicSparsityPattern          &dsp,
+                   const AffineConstraints<double> &constraints) const;
 
       /**
        * The (minus, plus) DoF pairs of the locally owned split nodes, one
@@ -508,6 +510,11 @@ namespace rupture
       double
       location_tolerance(const std::vector<NodePair> &of) const;
 
+      /// The split-node method's tractions of the hanging pairs: those of
+      /// the pairs they follow, interpolated as the displacements are.
+      void
+      interpolate_hanging_tractions();
+
       /// The number of values state_fields() holds per pair.
       unsigned int
       n_transfer_values() const;
@@ -659,6 +666,21 @@ namespace rupture
       /// Pairs of the last set-up without a pair at their location before
       /// it (all but the first set-up), over all processes.
       unsigned int n_global_new = 0;
+      /// True if some pair lies on hanging nodes (on any process).
+      bool any_hanging = false;
+      /// The split-node method's hanging pairs: component c of the
+      /// traction change of pair k takes weight times the value that
+      /// hanging_gather reads from traction_change at the same place.
+      struct HangingSource
+      {
+        unsigned int pair;
+        unsigned int component;
+        double       weight;
+      };
+      std::vector<HangingSource> hanging_sources;
+      SparseGather               hanging_gather;
+      VectorType                 traction_change;
+
       /// The indices in pairs of the new pairs of the last set-up.
       std::vector<unsigned int> new_pair_indices;
       /// True after the first set-up.

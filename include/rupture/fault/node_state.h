@@ -27,6 +27,10 @@ namespace rupture
       /// Tributary area (m^2; m in 2-D) and unit normal (minus to plus).
       double         area = 0;
       Tensor<1, dim> normal;
+      /// On hanging nodes (a fault refined more on one part than on the
+      /// next): the pair's displacements follow other pairs' (constrained
+      /// pairs, see Fault::setup()).
+      bool hanging = false;
     };
 
 

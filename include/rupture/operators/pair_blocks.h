@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -54,6 +55,20 @@ namespace rupture
         return exchange;
       }
 
+      /**
+       * Pairs on hanging nodes: entry (slot, master, weight) says that the
+       * pairs' entry number slot (2 dim per pair, minus then plus) follows
+       * the DoF @p master with @p weight. apply() then reads such an entry
+       * from its masters and adds its product to them (the constrained
+       * operator). Collective; after reinit().
+       */
+      void
+      set_hanging(
+        const std::vector<
+          std::tuple<unsigned int, types::global_dof_index, double>> &entries,
+        const IndexSet                                               &owned,
+        const MPI_Comm communicator);
+
       /// The blocks D_k, one per pair, to be set by the user.
       std::vector<Tensor<2, dim>> blocks;
 
@@ -80,7 +95,14 @@ namespace rupture
       std::vector<PairDofs>         pair_dofs;
       SparseGather                  exchange;
       std::vector<double>           inverses, point_inverses;
-      mutable std::vector<double>   values, results;
+      /// set_hanging(): the slots and weights of the masters that
+      /// hanging_exchange reads and adds to.
+      std::vector<std::pair<unsigned int, double>> hanging_slots;
+      SparseGather                                 hanging_exchange;
+      mutable std::vector<double>                  hanging_values;
+      /// set_hanging() was called (on every process).
+      bool                        hanging_active = false;
+      mutable std::vector<double> values, results;
     };
   } // namespace Operators
 } // namespace rupture

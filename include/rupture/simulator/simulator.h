@@ -121,6 +121,12 @@ namespace rupture
     // --- set up (simulator.cc) ---
     void
     parse_parameters(ParameterHandler &prm);
+    /// After a refinement of the mesh: refine the cells next to cells
+    /// across the fault that are finer, until both sides of every fault
+    /// face match (the fault's pairs need it).
+    void
+    refine_fault_alike();
+
     void
     make_mesh();
     /// Interpolate the initial displacement and velocity (with a fault's
