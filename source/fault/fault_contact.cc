@@ -153,6 +153,22 @@ namespace rupture
 
     template <int dim>
     void
+    Fault<dim>::add_contact_force(const AffineConstraints<double> &constraints,
+                                  VectorType                      &force) const
+    {
+      // (A vector of its own: its last operation is an addition on every
+      // process, whether it has pairs or not.)
+      VectorType f(force.locally_owned_elements(), communicator);
+      for (const auto &pair : pairs)
+        add_internal_force(pair, constraints, f);
+      f.compress(VectorOperation::add);
+      force += f;
+    }
+
+
+
+    template <int dim>
+    void
     Fault<dim>::add_internal_force(const NodePair                  &pair,
                                    const AffineConstraints<double> &constraints,
                                    VectorType                      &force) const

@@ -152,7 +152,14 @@ namespace rupture
                                  origin_text + ">."));
           this->surface = z[0];
         }
-      origin          = fault.reference_point();
+      origin = fault.reference_point();
+      // A new set-up (a changed mesh) locates the stations anew.
+      station_keys.clear();
+      for (auto &s : stations)
+        {
+          s.nodes.clear();
+          s.weights.clear();
+        }
       const auto all  = fault.gather();
       faces           = fault.gather_faces();
       const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;

@@ -41,7 +41,12 @@ namespace rupture
       "                             --set \"Time integration/End time=2\"\n"
       "  --resume                   continue the run of file.prm from the newest\n"
       "                             checkpoint in its output directory\n"
-      "                             (<Checkpoint/Interval>)\n";
+      "                             (<Checkpoint/Interval>)\n"
+      "  --refine N                 with --resume: continue on the checkpoint's\n"
+      "                             mesh refined N more times everywhere (1 to\n"
+      "                             3), its fields and the fault's state carried\n"
+      "                             over, e.g. a loading phase computed coarse\n"
+      "                             and its dynamic phase fine\n";
 
 
 
@@ -233,11 +238,12 @@ namespace rupture
 
     template <int dim>
     void
-    run_simulation(ParameterHandler &prm,
-                   const MPI_Comm    communicator,
-                   const bool        resume)
+    run_simulation(ParameterHandler  &prm,
+                   const MPI_Comm     communicator,
+                   const bool         resume,
+                   const unsigned int refinements)
     {
-      Simulator<dim> simulator(communicator, prm, resume);
+      Simulator<dim> simulator(communicator, prm, resume, refinements);
       simulator.run();
     }
   } // namespace
@@ -255,7 +261,8 @@ namespace rupture
         std::string              parameter_file;
         std::string              print_format;
         std::vector<std::string> overrides;
-        bool                     resume = false;
+        bool                     resume      = false;
+        int                      refinements = 0;
         for (unsigned int i = 0; i < arguments.size(); ++i)
           {
             const std::string &arg = arguments[i];
@@ -288,6 +295,28 @@ namespace rupture
               }
             else if (arg == "--resume")
               resume = true;
+            else if (arg == "--refine")
+              {
+                AssertThrow(i + 1 < arguments.size(),
+                            ExcMessage("The option --refine needs a number "
+                                       "of refinements (1 to 3)."));
+                const std::string n = arguments[++i];
+                try
+                  {
+                    std::size_t end = 0;
+                    refinements     = std::stoi(n, &end);
+                    if (end != n.size())
+                      refinements = -1;
+                  }
+                catch (...)
+                  {
+                    refinements = -1;
+                  }
+                AssertThrow(refinements >= 1 && refinements <= 3,
+                            ExcMessage("--refine " + n +
+                                       ": the number of refinements must be "
+                                       "1, 2 or 3."));
+              }
             else if (arg == "--set")
               {
                 AssertThrow(i + 1 < arguments.size(),
@@ -302,8 +331,8 @@ namespace rupture
                 AssertThrow(false,
                             ExcMessage("Unknown option <" + arg +
                                        ">. Allowed are --help, "
-                                       "--print-parameters, --set and "
-                                       "--resume; see 'rupture --help'."));
+                                       "--print-parameters, --set, --resume "
+                                       "and --refine; see 'rupture --help'."));
               }
             else
               {
@@ -345,6 +374,9 @@ namespace rupture
         AssertThrow(!parameter_file.empty(),
                     ExcMessage("No parameter file given. Run 'rupture "
                                "file.prm'; see 'rupture --help'."));
+        AssertThrow(refinements == 0 || resume,
+                    ExcMessage("--refine refines the mesh of the checkpoint "
+                               "that --resume continues: give both."));
         {
           std::ifstream test(parameter_file);
           AssertThrow(test.good() &&
@@ -461,9 +493,9 @@ namespace rupture
         const Interruption::Handlers handlers;
         const unsigned int           dimension = prm.get_integer("Dimension");
         if (dimension == 2)
-          run_simulation<2>(prm, communicator, resume);
+          run_simulation<2>(prm, communicator, resume, refinements);
         else
-          run_simulation<3>(prm, communicator, resume);
+          run_simulation<3>(prm, communicator, resume, refinements);
       }
     catch (const Interruption::Stopped &stopped)
       {

@@ -26,9 +26,10 @@
 namespace rupture
 {
   template <int dim>
-  Simulator<dim>::Simulator(const MPI_Comm    communicator,
-                            ParameterHandler &prm,
-                            const bool        resume)
+  Simulator<dim>::Simulator(const MPI_Comm     communicator,
+                            ParameterHandler  &prm,
+                            const bool         resume,
+                            const unsigned int refinements)
     : communicator(communicator)
     , pcout(log.stream(),
             dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
@@ -42,8 +43,9 @@ namespace rupture
     , stable_time_step(0)
     , wall_time_start(0)
   {
-    services                 = std::make_unique<Services>(*this);
-    this->checkpoints.resume = resume;
+    services                      = std::make_unique<Services>(*this);
+    this->checkpoints.resume      = resume;
+    this->checkpoints.refinements = refinements;
     parse_parameters(prm);
     if (resume)
       {
@@ -222,6 +224,8 @@ namespace rupture
     // The state of the checkpoint's step, and the rest of the run: the
     // phase it was written in goes on from the step after it.
     read_checkpoint();
+    if (checkpoints.refinements > 0)
+      refine_continued_run();
     if (termination.any())
       pcout << termination.description() << "\n";
     pcout << "*** Continuing after step " << state.step

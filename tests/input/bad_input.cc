@@ -228,6 +228,9 @@ main(int argc, char **argv)
   check("more than 1e9 time steps",
         {"valid.prm", "--set", "Time integration/End time=1e9"});
   check("unknown format of --print-parameters", {"--print-parameters", "json"});
+  check("--refine without --resume", {"valid.prm", "--refine", "1"});
+  check("--refine with a bad number",
+        {"valid.prm", "--resume", "--refine", "x"});
   check("empty output directory", {"valid.prm", "--set", "Output directory="});
   check("block Jacobi with a direct solver",
         {"valid.prm",

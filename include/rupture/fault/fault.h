@@ -190,6 +190,15 @@ namespace rupture
                const double                     sign = 1);
 
       /**
+       * Add the contact forces of the pairs' tractions of the last
+       * assemble() (or of the state carried to a new mesh) to @p force,
+       * without return-mapping again.
+       */
+      void
+      add_contact_force(const AffineConstraints<double> &constraints,
+                        VectorType                      &force) const;
+
+      /**
        * Newton safeguard of penalty contact. For each pair that slips in the
        * last assemble(), follow its tangential trial traction along the
        * Newton update @p increment (with ghost entries). If the full update

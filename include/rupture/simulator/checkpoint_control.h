@@ -26,6 +26,9 @@ namespace rupture
     /// directory).
     bool        resume = false;
     std::string resume_from;
+    /// The checkpoint's mesh is refined this many more times everywhere
+    /// before the run continues (--refine).
+    unsigned int refinements = 0;
     /// The run's parameters as written to parameters.prm (ShortPRM), which
     /// a checkpoint keeps for the compatibility check.
     std::string parameters_text;

@@ -90,9 +90,15 @@ namespace rupture
      * Set up a run from @p prm; with @p resume, continue the run of the
      * same parameters from the newest checkpoint in its output directory.
      */
-    Simulator(const MPI_Comm    communicator,
-              ParameterHandler &prm,
-              const bool        resume = false);
+    /**
+     * Set up a run of @p prm, or with @p resume the continuation of its
+     * newest checkpoint, on the checkpoint's mesh refined @p refinements
+     * more times (the command line's --refine).
+     */
+    Simulator(const MPI_Comm     communicator,
+              ParameterHandler  &prm,
+              const bool         resume      = false,
+              const unsigned int refinements = 0);
     ~Simulator();
 
     /**
@@ -121,6 +127,15 @@ namespace rupture
     // --- set up (simulator.cc) ---
     void
     parse_parameters(ParameterHandler &prm);
+    /// A continued run on a finer mesh (--refine, refine.cc): refine the
+    /// checkpoint's mesh, carry the fields and the fault's state over and
+    /// set everything up again.
+    void
+    refine_continued_run();
+    /// The forces of the last step that the energy sums take up (as
+    /// initialize_state() computes them), for the state as it is.
+    void
+    refresh_step_forces();
     /// After a refinement of the mesh: refine the cells next to cells
     /// across the fault that are finer, until both sides of every fault
     /// face match (the fault's pairs need it).

@@ -1,0 +1,147 @@
+// A continued run on a finer mesh (--refine): the checkpoint's mesh is
+// refined, its fields and the fault's state are carried over by deal.II's
+// SolutionTransfer, and everything that depends on the mesh is set up
+// again.
+
+#include <rupture/fault/fault.h>
+#include <rupture/simulator/simulator.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <iomanip>
+
+namespace rupture
+{
+  template <int dim>
+  void
+  Simulator<dim>::refine_continued_run()
+  {
+    TimerOutput::Scope t(timer, "Refine continued run");
+    using Scheme = TimeIntegration::Scheme;
+    const bool dynamic =
+      !time_parameters.loading_phase || state.clock.in_dynamic_phase;
+    AssertThrow(!(dynamic && time_parameters.scheme ==
+                               Scheme::explicit_central_difference),
+                ExcMessage(
+                  "--refine continues checkpoints of quasi-static and "
+                  "implicit phases (a loading phase, whatever its dynamic "
+                  "phase), but this checkpoint is in a phase of the explicit "
+                  "scheme, whose time step belongs to its mesh. Continue it "
+                  "without --refine, or refine from a checkpoint of its "
+                  "loading phase."));
+    const unsigned int n_pairs_before = fault ? fault->n_split_nodes() : 0;
+    unsigned int       n_without      = 0;
+    for (unsigned int level = 0; level < checkpoints.refinements; ++level)
+      {
+        // The fields and the fault's state, with ghost entries, attached to
+        // the mesh.
+        const std::vector<VectorType *> fields = checkpoint_fields();
+        std::vector<VectorType>         carried;
+        for (VectorType *f : fields)
+          carried.push_back(*f);
+        if (fault)
+          for (auto &f : fault->state_fields(locally_owned_dofs))
+            carried.push_back(std::move(f));
+        std::vector<VectorType>         ghosted(carried.size());
+        std::vector<const VectorType *> in;
+        for (unsigned int k = 0; k < carried.size(); ++k)
+          {
+            ghosted[k].reinit(locally_owned_dofs,
+                              locally_relevant_dofs,
+                              communicator);
+            ghosted[k] = carried[k];
+            in.push_back(&ghosted[k]);
+          }
+        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+          dof_handler);
+        transfer.prepare_for_coarsening_and_refinement(in);
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            cell->set_refine_flag();
+        triangulation.execute_coarsening_and_refinement();
+
+        setup_dofs();
+        std::vector<VectorType *> out;
+        for (auto &c : carried)
+          {
+            c.reinit(locally_owned_dofs, communicator);
+            out.push_back(&c);
+          }
+        transfer.interpolate(out);
+        for (unsigned int k = 0; k < fields.size(); ++k)
+          {
+            *fields[k] = carried[k];
+            distribute_hanging(*fields[k]);
+          }
+        if (fault)
+          n_without += fault->interpolate_new_pairs(
+            std::vector<VectorType>(carried.begin() + fields.size(),
+                                    carried.end()));
+      }
+    // The operators of the finer mesh, the phase's integrator (set up
+    // again by run_continued()), and the forces of the last step that the
+    // energy sums' trapezoidal rules take up: nodal forces belong to their
+    // mesh and are computed anew from the carried state, not carried.
+    assemble_physics_matrices();
+    if (fault)
+      fault->set_time(state.time);
+    refresh_step_forces();
+    pcout << "   The checkpoint's mesh refined " << checkpoints.refinements
+          << (checkpoints.refinements == 1 ? " time" : " times") << ": "
+          << triangulation.n_global_active_cells() << " cells, "
+          << dof_handler.n_dofs() << " DoFs";
+    if (fault)
+      pcout << ", " << fault->n_split_nodes()
+            << " fault pairs (the checkpoint's " << n_pairs_before
+            << " keep their state, the others' is interpolated along the "
+               "fault"
+            << (n_without > 0 ? "; " + std::to_string(n_without) +
+                                  " had no pair near and start anew" :
+                                std::string())
+            << ")";
+    pcout << "\n";
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::refresh_step_forces()
+  {
+    // As initialize_state() computes them, for the state as it is.
+    using Scheme            = TimeIntegration::Scheme;
+    const bool quasi_static = current_scheme() == Scheme::quasi_static;
+    VectorType load(locally_owned_dofs, communicator);
+    assemble_load_vector(state.time, load);
+    // The fault's force of its carried tractions: a new return mapping
+    // would change the pairs' trial states, from which the loading phase
+    // tells whether friction weakens.
+    energy.contact_force = 0;
+    if (fault)
+      fault->add_contact_force(hanging_constraints, energy.contact_force);
+    VectorType ku(load), ma(load);
+    apply_stiffness(state.displacement, ku);
+    compute_damping_force(state.velocity, energy.damping_force);
+    ma = 0;
+    if (!quasi_static)
+      apply_mass(state.acceleration, ma);
+    energy.applied_force = load;
+    for (const auto i : locally_owned_dofs)
+      if (hanging_constraints.is_constrained(i))
+        energy.applied_force(i) = 0;
+      else if (increment_constraints.is_constrained(i) || quasi_static)
+        energy.applied_force(i) =
+          ku(i) + ma(i) + energy.damping_force(i) + energy.contact_force(i);
+    energy.applied_force.compress(VectorOperation::insert);
+    if (has_absorbing)
+      {
+        energy.absorbing_force.reinit(load);
+        compute_absorbing_force(state.velocity, energy.absorbing_force);
+      }
+  }
+
+
+
+  template class Simulator<2>;
+  template class Simulator<3>;
+} // namespace rupture
