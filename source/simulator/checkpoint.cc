@@ -163,6 +163,37 @@ namespace rupture
                                "may change. Run without --resume to start "
                                "anew."));
       }
+
+    // --refine: the phase the checkpoint continues must keep its time step
+    // on the finer mesh (checked before the output directory is touched).
+    if (checkpoints.refinements > 0)
+      {
+        BinaryIO::Records records;
+        if (format == format_name_v1)
+          {
+            std::vector<double> s;
+            BinaryIO::read(in, s);
+            for (unsigned int k = 0; k < std::min(s.size(), v1_names.size());
+                 ++k)
+              records[v1_names[k]] = s[k];
+          }
+        else
+          BinaryIO::read(in, records);
+        const bool dynamic =
+          !time_parameters.loading_phase ||
+          BinaryIO::record(records, "time/in dynamic phase") != 0;
+        AssertThrow(
+          !(dynamic && time_parameters.scheme ==
+                         TimeIntegration::Scheme::explicit_central_difference),
+          ExcMessage(
+            "--refine continues checkpoints of quasi-static and implicit "
+            "phases (a loading phase, whatever its dynamic phase), but the "
+            "checkpoint <" +
+            checkpoints.resume_from +
+            "> is in a phase of the explicit scheme, whose time step belongs "
+            "to its mesh. Continue it without --refine, or refine from a "
+            "checkpoint of its loading phase."));
+      }
   }
 
 

@@ -17,18 +17,8 @@ namespace rupture
   Simulator<dim>::refine_continued_run()
   {
     TimerOutput::Scope t(timer, "Refine continued run");
-    using Scheme = TimeIntegration::Scheme;
-    const bool dynamic =
-      !time_parameters.loading_phase || state.clock.in_dynamic_phase;
-    AssertThrow(!(dynamic && time_parameters.scheme ==
-                               Scheme::explicit_central_difference),
-                ExcMessage(
-                  "--refine continues checkpoints of quasi-static and "
-                  "implicit phases (a loading phase, whatever its dynamic "
-                  "phase), but this checkpoint is in a phase of the explicit "
-                  "scheme, whose time step belongs to its mesh. Continue it "
-                  "without --refine, or refine from a checkpoint of its "
-                  "loading phase."));
+    // (check_checkpoint_parameters() has refused a phase of the explicit
+    // scheme, whose stable step would change with the mesh.)
     const unsigned int n_pairs_before = fault ? fault->n_split_nodes() : 0;
     unsigned int       n_without      = 0;
     for (unsigned int level = 0; level < checkpoints.refinements; ++level)

@@ -10,7 +10,9 @@
 // the start: the continued run ends its loading phase when the fine one
 // does and its slip is within 1 % of the fine run's (measured: the same
 // to 4 digits, where the coarse run's is 13 % and 22 % lower), its energy
-// balance closes, and it reports the refined mesh.
+// balance closes, and it reports the refined mesh. A checkpoint in a
+// phase of the explicit scheme (whose stable step would change) is
+// refused with the reason, its run's files untouched.
 
 #include <deal.II/base/mpi.h>
 
@@ -96,6 +98,25 @@ main(int argc, char **argv)
                                     "Output directory=fine",
                                     "--set",
                                     "Scene/Box/Number of cells=32"});
+
+  // A checkpoint in a phase of the explicit scheme is refused, before the
+  // run's directory is touched.
+  const std::vector<std::string> explicit_run = {
+    std::string(SOURCE_DIR) + "/../fault/split_node_3d.prm",
+    "--set",
+    "Output directory=explicit",
+    "--set",
+    "Checkpoint/Interval=10",
+    "--set",
+    "Time integration/End time=0.4"};
+  tests::run(explicit_run);
+  const std::string summary =
+    root ? tests::read_file("explicit/summary.json") : std::string();
+  std::vector<std::string> refine_explicit = explicit_run;
+  for (const std::string a : {"--resume", "--refine", "1"})
+    refine_explicit.push_back(a);
+  std::string errors;
+  const int   code_explicit = tests::run_capture(refine_explicit, errors);
   if (!root)
     return 0;
   const Result continued = result_of("continued"), fine = result_of("fine");
@@ -122,6 +143,15 @@ main(int argc, char **argv)
                 results[i]->slip[0],
                 results[i]->slip[1],
                 results[i]->balance ? "closes" : "does not close");
+  std::printf("--refine on a checkpoint of the explicit scheme: exit code "
+              "%d, %s; the run's summary untouched: %s\n",
+              code_explicit,
+              errors.find("--refine continues checkpoints of quasi-static "
+                          "and implicit phases") != std::string::npos ?
+                "refused with the reason" :
+                "not refused",
+              tests::read_file("explicit/summary.json") == summary ? "yes" :
+                                                                     "no");
   for (unsigned int s = 0; s < 2; ++s)
     std::printf("slip at %s: the continued run within 1 %% of the fine one: "
                 "%s, nearer to it than the coarse run: %s\n",
