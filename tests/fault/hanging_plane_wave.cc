@@ -20,6 +20,7 @@
 #include <deal.II/base/mpi.h>
 
 #include "../tests.h"
+#include "plane_wave_solution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,27 +28,6 @@
 
 namespace
 {
-  double
-  analytic_slip(const double t)
-  {
-    const double tw = 0.5 * std::log(11.);
-    return t < tw ? 0.1 * (std::exp(2 * t) - 1) : 1 + 2.2 * (t - tw);
-  }
-
-  // The slip (column 1) of a station's table at time t, linearly
-  // interpolated.
-  double
-  slip_at(const std::vector<std::vector<double>> &rows, const double t)
-  {
-    for (unsigned int i = 1; i < rows.size(); ++i)
-      if (rows[i][0] >= t - 1e-12)
-        {
-          const double w = (t - rows[i - 1][0]) / (rows[i][0] - rows[i - 1][0]);
-          return (1 - w) * rows[i - 1][1] + w * rows[i][1];
-        }
-    return rows.empty() ? 0 : rows.back()[1];
-  }
-
   void
   check(const std::string              &title,
         const std::vector<std::string> &settings,
@@ -72,14 +52,14 @@ namespace
                 "within 1%%  spread below 0.5%%\n");
     for (const double t : times)
       {
-        const double a   = analytic_slip(t);
+        const double a   = tests::plane_wave_slip(t);
         double       low = 1e300, high = -1e300;
         bool         within = true;
         std::printf("  %.1f   %.4f  ", t, a);
         for (const char *station : {"coarse", "fine", "hanging", "master"})
           {
-            const double s =
-              slip_at(tests::read_statistics(dir + station + ".dat"), t);
+            const double s = tests::value_at(
+              tests::read_statistics(dir + station + ".dat"), 0, 1, t);
             std::printf("  %.4f", s);
             low    = std::min(low, s);
             high   = std::max(high, s);

@@ -22,34 +22,10 @@
 #include <deal.II/base/mpi.h>
 
 #include "../tests.h"
+#include "plane_wave_solution.h"
 
 #include <cmath>
 #include <cstdio>
-
-namespace
-{
-  double
-  analytic_slip(const double t)
-  {
-    const double tw = 0.5 * std::log(11.);
-    return t < tw ? 0.1 * (std::exp(2 * t) - 1) : 1 + 2.2 * (t - tw);
-  }
-
-  // Column of a fault quantity at time t, linearly interpolated.
-  double
-  at(const std::vector<std::vector<double>> &rows,
-     const unsigned int                      column,
-     const double                            t)
-  {
-    for (unsigned int i = 1; i < rows.size(); ++i)
-      if (rows[i][1] >= t - 1e-12)
-        {
-          const double w = (t - rows[i - 1][1]) / (rows[i][1] - rows[i - 1][1]);
-          return (1 - w) * rows[i - 1][column] + w * rows[i][column];
-        }
-    return rows.back()[column];
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -69,7 +45,8 @@ main(int argc, char **argv)
     bool       ok   = true;
     for (const double t : {0.5, 1.0, 2.0, 3.0})
       {
-        const double s = at(rows, slip, t), a = analytic_slip(t);
+        const double s = tests::value_at(rows, 1, slip, t),
+                     a = tests::plane_wave_slip(t);
         const double e = std::abs(s - a) / a;
         ok             = ok && e < 0.01;
         std::printf("  %.1f   %.4f    %.4f    %s\n",
