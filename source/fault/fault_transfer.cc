@@ -9,6 +9,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -40,6 +41,20 @@ namespace rupture
       };
 
       constexpr unsigned int n_vectors = 5;
+
+      /// The vectors of a pair (const or not) that a transfer carries, in
+      /// their order after first_vector.
+      template <class Pair>
+      auto
+      transferred_vectors(Pair &pair)
+      {
+        return std::array<decltype(&pair.slip), n_vectors>{
+          {&pair.plastic_slip,
+           &pair.slip,
+           &pair.slip_velocity,
+           &pair.slip_at_start,
+           &pair.trial.traction}};
+      }
     } // namespace
 
 
@@ -121,19 +136,17 @@ namespace rupture
       for (const auto &pair : pairs)
         {
           std::fill(values.begin(), values.end(), 0.);
-          values[weight]         = 1;
-          values[mark]           = location_mark(pair.location, length);
-          values[slip_path]      = pair.state.slip_path;
-          values[slip_rate]      = pair.state.slip_rate;
-          values[rupture_rate]   = pair.rupture_rate;
-          values[ruptured]       = pair.rupture_time >= 0 ? 1 : 0;
-          values[rupture_time]   = std::max(pair.rupture_time, 0.);
+          values[weight]       = 1;
+          values[mark]         = location_mark(pair.location, length);
+          values[slip_path]    = pair.state.slip_path;
+          values[slip_rate]    = pair.state.slip_rate;
+          values[rupture_rate] = pair.rupture_rate;
+          // (A pair whose rupture time is unknown has ruptured too.)
+          values[ruptured] =
+            pair.rupture_time != NodeState<dim>::not_ruptured ? 1 : 0;
+          values[rupture_time]   = values[ruptured] * pair.rupture_time;
           values[friction_value] = pair.trial.friction;
-          const Tensor<1, dim> *vectors[n_vectors] = {&pair.plastic_slip,
-                                                      &pair.slip,
-                                                      &pair.slip_velocity,
-                                                      &pair.slip_at_start,
-                                                      &pair.trial.traction};
+          const auto vectors     = transferred_vectors(pair);
           for (unsigned int v = 0; v < n_vectors; ++v)
             for (unsigned int d = 0; d < dim; ++d)
               values[first_vector + v * dim + d] = (*vectors[v])[d];
@@ -182,15 +195,11 @@ namespace rupture
             }
           for (auto &v : values)
             v /= w;
-          pair.state.slip_path               = values[slip_path];
-          pair.state.slip_rate               = values[slip_rate];
-          pair.rupture_rate                  = values[rupture_rate];
-          pair.trial.friction                = values[friction_value];
-          Tensor<1, dim> *vectors[n_vectors] = {&pair.plastic_slip,
-                                                &pair.slip,
-                                                &pair.slip_velocity,
-                                                &pair.slip_at_start,
-                                                &pair.trial.traction};
+          pair.state.slip_path = values[slip_path];
+          pair.state.slip_rate = values[slip_rate];
+          pair.rupture_rate    = values[rupture_rate];
+          pair.trial.friction  = values[friction_value];
+          const auto vectors   = transferred_vectors(pair);
           for (unsigned int v = 0; v < n_vectors; ++v)
             for (unsigned int d = 0; d < dim; ++d)
               (*vectors[v])[d] = values[first_vector + v * dim + d];
@@ -209,9 +218,10 @@ namespace rupture
             std::abs(values[mark] - location_mark(pair.location, length)) <
             1e-9;
           if (existed)
-            pair.rupture_time = values[ruptured] > 0.5 ?
-                                  values[rupture_time] :
-                                  NodeState<dim>::not_ruptured;
+            pair.rupture_time =
+              values[ruptured] < 0.5      ? NodeState<dim>::not_ruptured :
+              values[rupture_time] < -1.5 ? NodeState<dim>::unknown_time :
+                                            values[rupture_time];
           else
             pair.rupture_time = values[ruptured] > 1e-12 ?
                                   NodeState<dim>::unknown_time :

@@ -115,14 +115,7 @@ namespace rupture
     ma = 0;
     if (!quasi_static)
       apply_mass(state.acceleration, ma);
-    energy.applied_force = load;
-    for (const auto i : locally_owned_dofs)
-      if (hanging_constraints.is_constrained(i))
-        energy.applied_force(i) = 0;
-      else if (increment_constraints.is_constrained(i) || quasi_static)
-        energy.applied_force(i) =
-          ku(i) + ma(i) + energy.damping_force(i) + energy.contact_force(i);
-    energy.applied_force.compress(VectorOperation::insert);
+    set_applied_force(load, ku, ma);
     if (has_absorbing)
       {
         energy.absorbing_force.reinit(load);

@@ -370,6 +370,25 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::set_applied_force(const VectorType &load,
+                                    const VectorType &ku,
+                                    const VectorType &ma)
+  {
+    energy.applied_force = load;
+    for (const auto i : locally_owned_dofs)
+      if (hanging_constraints.is_constrained(i))
+        energy.applied_force(i) = 0;
+      else if (increment_constraints.is_constrained(i) ||
+               current_scheme() == TimeIntegration::Scheme::quasi_static)
+        energy.applied_force(i) =
+          ku(i) + ma(i) + energy.damping_force(i) + energy.contact_force(i);
+    energy.applied_force.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::initialize_state()
   {
     TimerOutput::Scope t(timer, "Initial state");
@@ -415,15 +434,7 @@ namespace rupture
     // The force the body is in balance with at the start. A quasi-static
     // run follows an equilibrium path, on which the loads grow from the
     // internal force K u_0 to their full value within the first step.
-    energy.applied_force = load;
-    for (const auto i : locally_owned_dofs)
-      if (hanging_constraints.is_constrained(i))
-        energy.applied_force(i) = 0;
-      else if (increment_constraints.is_constrained(i) ||
-               current_scheme() == TimeIntegration::Scheme::quasi_static)
-        energy.applied_force(i) =
-          ku(i) + ma(i) + energy.damping_force(i) + energy.contact_force(i);
-    energy.applied_force.compress(VectorOperation::insert);
+    set_applied_force(load, ku, ma);
 
     hanging_constraints.set_zero(ku);
     energy.strain = 0.5 * (state.displacement * ku);

@@ -88,12 +88,9 @@ namespace rupture
 
     /**
      * Set up a run from @p prm; with @p resume, continue the run of the
-     * same parameters from the newest checkpoint in its output directory.
-     */
-    /**
-     * Set up a run of @p prm, or with @p resume the continuation of its
-     * newest checkpoint, on the checkpoint's mesh refined @p refinements
-     * more times (the command line's --refine).
+     * same parameters from the newest checkpoint in its output directory,
+     * on the checkpoint's mesh refined @p refinements more times (the
+     * command line's --refine).
      */
     Simulator(const MPI_Comm     communicator,
               ParameterHandler  &prm,
@@ -136,6 +133,14 @@ namespace rupture
     /// initialize_state() computes them), for the state as it is.
     void
     refresh_step_forces();
+    /// The force the energy sums count as applied: @p load at free DoFs,
+    /// at held DoFs (all in a quasi-static phase) the force the body is
+    /// in balance with, K u (@p ku) + M a (@p ma) + damping + contact
+    /// (time_stepping.cc).
+    void
+    set_applied_force(const VectorType &load,
+                      const VectorType &ku,
+                      const VectorType &ma);
     /// After a refinement of the mesh: refine the cells next to cells
     /// across the fault that are finer, until both sides of every fault
     /// face match (the fault's pairs need it).
