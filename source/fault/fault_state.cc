@@ -279,6 +279,27 @@ namespace rupture
 
 
     template <int dim>
+    std::vector<Point<dim>>
+    Fault<dim>::active_locations(const double rate,
+                                 const double time,
+                                 const double memory) const
+    {
+      std::vector<Point<dim>> active;
+      for (const auto &pair : pairs)
+        {
+          const bool ruptured =
+            pair.rupture_time >= 0 &&
+            (memory < 0 || time - pair.rupture_time < memory);
+          if (pair.state.slip_rate > rate || ruptured ||
+              (memory < 0 && pair.rupture_time == NodeState<dim>::unknown_time))
+            active.push_back(pair.location);
+        }
+      return active;
+    }
+
+
+
+    template <int dim>
     Statistics
     Fault<dim>::statistics() const
     {

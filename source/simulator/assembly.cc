@@ -89,7 +89,7 @@ namespace rupture
 
   template <int dim>
   void
-  Simulator<dim>::assemble_physics_matrices()
+  Simulator<dim>::assemble_physics_matrices(const bool prepare_first_phase)
   {
     TimerOutput::Scope t(timer, "Assemble matrices");
     using Scheme        = TimeIntegration::Scheme;
@@ -252,6 +252,8 @@ namespace rupture
       absorbing_damping.compress(VectorOperation::add);
 
     // The first phase: the quasi-static loading phase, or the run itself.
+    if (!prepare_first_phase)
+      return;
     if (time_parameters.loading_phase)
       prepare_phase(Scheme::quasi_static,
                     time_parameters.loading_time_step,
@@ -291,7 +293,8 @@ namespace rupture
   void
   Simulator<dim>::prepare_phase(const TimeIntegration::Scheme scheme,
                                 const double requested_time_step,
-                                const double duration)
+                                const double duration,
+                                const bool   within_phase)
   {
     using Scheme = TimeIntegration::Scheme;
     // Without inertia the stiffness alone must hold the body: a direction
@@ -334,9 +337,10 @@ namespace rupture
           rayleigh_alpha,
           rayleigh_beta,
           fault_zone ? fault_zone_fraction : 0.);
-        pcout << "   Stable explicit time step: " << std::setprecision(6)
-              << stable_time_step << " s (highest element frequency " << omega
-              << " rad/s)\n";
+        if (!within_phase)
+          pcout << "   Stable explicit time step: " << std::setprecision(6)
+                << stable_time_step << " s (highest element frequency " << omega
+                << " rad/s)\n";
         if (state.time_step == 0)
           state.time_step = time_parameters.courant_fraction * stable_time_step;
         else
@@ -352,9 +356,19 @@ namespace rupture
                         "step> = 0 to use <Courant fraction> times it, or "
                         "use the implicit scheme."));
       }
-    state.time_step = duration / n_steps_of_phase(duration, state.time_step);
+    // The steps fit the phase, or within it the rest of its current
+    // segment (the mesh changed, and with it the stable step).
+    const double span =
+      within_phase ? state.clock.segment_duration(duration) : duration;
+    state.time_step = span / n_steps_of_phase(span, state.time_step);
 
+    // Within a phase the new integrator goes on from the old one's state.
+    BinaryIO::Records records;
+    if (within_phase && integrator)
+      integrator->save(records);
     integrator = TimeIntegration::create(scheme, integrator_context());
+    if (within_phase && !records.empty())
+      integrator->load(records);
     integrator->prepare();
   }
 

@@ -1,5 +1,6 @@
 // The run-time parameters of the simulator: their declaration and parsing.
 
+#include <rupture/adaptivity/parameters.h>
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
 
@@ -254,6 +255,7 @@ namespace rupture
     TimeIntegration::Parameters::declare_parameters(prm);
     Solver::LinearSolver::declare_parameters(prm);
     Termination::Criteria::declare_parameters(prm);
+    Adaptivity::Parameters::declare_parameters(prm);
 
     prm.enter_subsection("Checkpoint");
     {
@@ -582,6 +584,30 @@ namespace rupture
                       "loading phase and give the prestress by <Fault/"
                       "Initial traction>, or use <Fault/Model> = penalty "
                       "contact with the implicit scheme."));
+      }
+    mesh_refinement.parse_parameters(prm);
+    if (mesh_refinement.enabled())
+      {
+        AssertThrow(fault != nullptr,
+                    ExcMessage("<Mesh refinement/Criteria> = rupture front "
+                               "follows a fault, but <Fault/Model> = none. "
+                               "Allowed: a fault model, or no criterion."));
+        AssertThrow(!linear_solver.multigrid(),
+                    ExcMessage("<Solver/Preconditioner> = multigrid cannot "
+                               "follow a mesh that <Mesh refinement/Criteria> "
+                               "refines locally (deal.II 9.4 builds no "
+                               "coarsening sequence for it). Use <Solver/"
+                               "Preconditioner> = AMG or block Jacobi."));
+        AssertThrow(time_parameters.scheme !=
+                        TimeIntegration::Scheme::explicit_central_difference ||
+                      time_parameters.time_step == 0,
+                    ExcMessage("<Mesh refinement/Criteria> changes the "
+                               "stable step of the explicit scheme during the "
+                               "run, so <Time integration/Time step> must be "
+                               "0 (the step is then <Courant fraction> times "
+                               "the stable step of each mesh), but it is " +
+                               std::to_string(time_parameters.time_step) +
+                               " s."));
       }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();

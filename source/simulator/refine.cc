@@ -13,6 +13,55 @@
 namespace rupture
 {
   template <int dim>
+  unsigned int
+  Simulator<dim>::execute_refinement()
+  {
+    // The fields and the fault's state, with ghost entries, attached to
+    // the mesh.
+    const std::vector<VectorType *> fields = checkpoint_fields();
+    std::vector<VectorType>         carried;
+    for (VectorType *f : fields)
+      carried.push_back(*f);
+    if (fault)
+      for (auto &f : fault->state_fields(locally_owned_dofs))
+        carried.push_back(std::move(f));
+    std::vector<VectorType>         ghosted(carried.size());
+    std::vector<const VectorType *> in;
+    for (unsigned int k = 0; k < carried.size(); ++k)
+      {
+        ghosted[k].reinit(locally_owned_dofs,
+                          locally_relevant_dofs,
+                          communicator);
+        ghosted[k] = carried[k];
+        in.push_back(&ghosted[k]);
+      }
+    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+      dof_handler);
+    transfer.prepare_for_coarsening_and_refinement(in);
+    triangulation.execute_coarsening_and_refinement();
+
+    setup_dofs();
+    std::vector<VectorType *> out;
+    for (auto &c : carried)
+      {
+        c.reinit(locally_owned_dofs, communicator);
+        out.push_back(&c);
+      }
+    transfer.interpolate(out);
+    for (unsigned int k = 0; k < fields.size(); ++k)
+      {
+        *fields[k] = carried[k];
+        distribute_hanging(*fields[k]);
+      }
+    if (!fault)
+      return 0;
+    return fault->interpolate_new_pairs(
+      std::vector<VectorType>(carried.begin() + fields.size(), carried.end()));
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::refine_continued_run()
   {
@@ -23,50 +72,10 @@ namespace rupture
     unsigned int       n_without      = 0;
     for (unsigned int level = 0; level < checkpoints.refinements; ++level)
       {
-        // The fields and the fault's state, with ghost entries, attached to
-        // the mesh.
-        const std::vector<VectorType *> fields = checkpoint_fields();
-        std::vector<VectorType>         carried;
-        for (VectorType *f : fields)
-          carried.push_back(*f);
-        if (fault)
-          for (auto &f : fault->state_fields(locally_owned_dofs))
-            carried.push_back(std::move(f));
-        std::vector<VectorType>         ghosted(carried.size());
-        std::vector<const VectorType *> in;
-        for (unsigned int k = 0; k < carried.size(); ++k)
-          {
-            ghosted[k].reinit(locally_owned_dofs,
-                              locally_relevant_dofs,
-                              communicator);
-            ghosted[k] = carried[k];
-            in.push_back(&ghosted[k]);
-          }
-        parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-          dof_handler);
-        transfer.prepare_for_coarsening_and_refinement(in);
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             cell->set_refine_flag();
-        triangulation.execute_coarsening_and_refinement();
-
-        setup_dofs();
-        std::vector<VectorType *> out;
-        for (auto &c : carried)
-          {
-            c.reinit(locally_owned_dofs, communicator);
-            out.push_back(&c);
-          }
-        transfer.interpolate(out);
-        for (unsigned int k = 0; k < fields.size(); ++k)
-          {
-            *fields[k] = carried[k];
-            distribute_hanging(*fields[k]);
-          }
-        if (fault)
-          n_without += fault->interpolate_new_pairs(
-            std::vector<VectorType>(carried.begin() + fields.size(),
-                                    carried.end()));
+        n_without += execute_refinement();
       }
     // The operators of the finer mesh, the phase's integrator (set up
     // again by run_continued()), and the forces of the last step that the

@@ -93,6 +93,31 @@ namespace rupture
 
 
   template <int dim>
+  bool
+  Simulator<dim>::flag_fault_alike()
+  {
+    bool flagged = false;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (!cell->at_boundary(f) && cell->neighbor(f)->has_children())
+            for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+              {
+                const auto child = cell->neighbor_child_on_subface(f, c);
+                if (fault->side(child) != fault->side(cell) &&
+                    !cell->refine_flag_set())
+                  {
+                    cell->clear_coarsen_flag();
+                    cell->set_refine_flag();
+                    flagged = true;
+                  }
+              }
+    return dealii::Utilities::MPI::max(flagged ? 1 : 0, communicator) != 0;
+  }
+
+
+
+  template <int dim>
   void
   Simulator<dim>::refine_fault_alike()
   {
@@ -100,22 +125,7 @@ namespace rupture
     // only: refine its neighbour across until both sides match.
     for (unsigned int pass = 0; pass < 2 * n_region_refinements + 2; ++pass)
       {
-        bool flagged = false;
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            for (const auto f : cell->face_indices())
-              if (!cell->at_boundary(f) && cell->neighbor(f)->has_children())
-                for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
-                  {
-                    const auto child = cell->neighbor_child_on_subface(f, c);
-                    if (fault->side(child) != fault->side(cell) &&
-                        !cell->refine_flag_set())
-                      {
-                        cell->set_refine_flag();
-                        flagged = true;
-                      }
-                  }
-        if (dealii::Utilities::MPI::max(flagged ? 1 : 0, communicator) == 0)
+        if (!flag_fault_alike())
           return;
         triangulation.execute_coarsening_and_refinement();
       }
@@ -218,6 +228,8 @@ namespace rupture
   Simulator<dim>::setup_dofs()
   {
     TimerOutput::Scope t(timer, "Set up DoFs");
+    // Ghosted copies exchange by the pattern of the old DoFs.
+    ghosts.reset();
 
     // One displacement field per side: component s*dim + c is component c
     // on side s, and FE_Nothing gives the other side no DoFs on a cell.

@@ -241,10 +241,20 @@ namespace rupture
         // of its start (its state came from the checkpoint).
         prepare_phase(time_parameters.scheme,
                       time_parameters.time_step,
-                      time_parameters.end_time);
+                      time_parameters.end_time,
+                      state.clock.segment_first_step > 0);
         if (fault)
           fault->continue_dynamic_phase(state.clock.dynamic_start);
       }
+    else if (state.clock.segment_first_step > 0)
+      // A step size of the checkpoint's mesh (<Mesh refinement>), not the
+      // phase's first.
+      prepare_phase(current_scheme(),
+                    requested_time_step(),
+                    time_parameters.loading_phase ?
+                      time_parameters.loading_end_time :
+                      time_parameters.end_time,
+                    true);
     integrator->load(checkpoints.records);
     run_phases(state.clock.steps_in_phase);
   }
@@ -290,6 +300,12 @@ namespace rupture
     if (has_absorbing)
       columns.emplace_back("Energy absorbed at the absorbing boundaries (J): "
                            "part of the dissipated energy");
+    // A mesh that changes (<Mesh refinement>), after all others.
+    if (mesh_refinement.enabled())
+      for (const std::string c : {"Degrees of freedom",
+                                  "Energy added by mesh changes (J)",
+                                  "Mesh adaptation wall time (s)"})
+        columns.push_back(c);
     // The friction law's state variables, after all others.
     if (fault)
       for (const auto &name : fault->friction().state_names())
@@ -500,9 +516,10 @@ namespace rupture
     // from the step after steps_done of the phase that started at
     // phase_start_time.
     TimeIntegration::PhaseClock &clock = state.clock;
-    const double       start   = clock.begin_phase(state.time, steps_done);
-    const unsigned int n_steps = static_cast<unsigned int>(
-      TimeIntegration::PhaseClock::steps_to_cover(duration, state.time_step));
+    const double start = clock.begin_phase(state.time, steps_done);
+    // (A phase whose mesh changed counts the steps of its segments.)
+    unsigned int n_steps = static_cast<unsigned int>(
+      clock.steps_of_phase(duration, state.time_step));
     pcout << "   Time step " << std::setprecision(6) << state.time_step << " s"
           << Utilities::readable_time(state.time_step, duration) << ", "
           << n_steps
@@ -601,6 +618,14 @@ namespace rupture
             pcout << std::defaultfloat << std::endl;
           }
         write_step_output(i == n_steps || stop || ends_early);
+        // The mesh follows the rupture, from the first step of a phase on
+        // (where a nucleation patch starts to slip); the checkpoint of the
+        // step holds the new mesh.
+        if (mesh_refinement.enabled() && i < n_steps && !stop && !ends_early &&
+            (i == 1 || state.step % mesh_refinement.interval == 0) &&
+            adapt_mesh(duration, requested_time_step(), i))
+          n_steps = static_cast<unsigned int>(
+            clock.steps_of_phase(duration, state.time_step));
         // Every <Interval> steps, when write_step_output() found one asked
         // for (wall-clock interval, SIGUSR1), and at the end of the run.
         if (checkpoints_enabled() &&
@@ -707,6 +732,12 @@ namespace rupture
       }
     if (has_absorbing)
       row.push_back(energy.absorbed);
+    if (mesh_refinement.enabled())
+      {
+        row.push_back(static_cast<double>(dof_handler.n_dofs()));
+        row.push_back(energy.remeshing);
+        row.push_back(test_mode ? 0. : adaptation_seconds);
+      }
     // The friction state's range, after all others.
     for (unsigned int i = 0; i < f.state_minimum.size(); ++i)
       {

@@ -425,6 +425,18 @@ namespace rupture
       Statistics
       statistics() const;
 
+      /**
+       * The locations of the locally owned pairs that slip faster than
+       * @p rate, or whose rupture (NodeState::rupture_time) is less than
+       * @p memory before @p time (both since the start of the dynamic
+       * phase; @p memory < 0: any rupture): where a mesh that follows the
+       * rupture is refined.
+       */
+      std::vector<Point<dim>>
+      active_locations(const double rate,
+                       const double time,
+                       const double memory) const;
+
       unsigned int
       n_split_nodes() const;
 

@@ -1,6 +1,7 @@
 #ifndef rupture_simulator_simulator_h
 #define rupture_simulator_simulator_h
 
+#include <rupture/adaptivity/parameters.h>
 #include <rupture/base/constraint_distributor.h>
 #include <rupture/base/ghosted_vectors.h>
 #include <rupture/fault/fault.h>
@@ -146,6 +147,41 @@ namespace rupture
     /// face match (the fault's pairs need it).
     void
     refine_fault_alike();
+    /// Flag the cells that refine_fault_alike() refines; whether any
+    /// process flagged one.
+    bool
+    flag_fault_alike();
+    /// Refine and coarsen the mesh as flagged, carry the fields of
+    /// checkpoint_fields() and the fault's state to the new mesh and set
+    /// up its DoFs (adapt.cc). Returns the number of new fault pairs that
+    /// had no old pair near.
+    unsigned int
+    execute_refinement();
+    /**
+     * Adapt the mesh to the criteria of <Mesh refinement> after the
+     * current step of the phase of @p duration (run with the requested
+     * step @p requested_time_step), @p steps_done of its steps done: flag,
+     * refine and coarsen, carry the state over, and set up the operators,
+     * the time step and the integrator again. Returns whether the mesh
+     * changed.
+     */
+    bool
+    adapt_mesh(const double       duration,
+               const double       requested_time_step,
+               const unsigned int steps_done);
+    /// The time step the current phase asks for (0: the explicit
+    /// scheme's Courant fraction of the stable step).
+    double
+    requested_time_step() const
+    {
+      return (time_parameters.loading_phase && !state.clock.in_dynamic_phase) ?
+               time_parameters.loading_time_step :
+               time_parameters.time_step;
+    }
+    /// The level a cell of the mesh had before any adaptation: the global
+    /// refinements and the static refinement region's levels.
+    unsigned int
+    base_level(const typename Triangulation<dim>::cell_iterator &cell) const;
 
     void
     make_mesh();
@@ -184,8 +220,10 @@ namespace rupture
              const std::vector<Point<dim>> &)> &action) const;
 
     // --- assembly (assembly.cc) ---
+    /// The operators of the mesh; with @p prepare_first_phase, the first
+    /// phase's time step and integrator too.
     void
-    assemble_physics_matrices();
+    assemble_physics_matrices(const bool prepare_first_phase = true);
     /**
      * Set the time step of a phase of the run, create its time integrator
      * and let it build what its steps need: the effective stiffness and
@@ -197,10 +235,14 @@ namespace rupture
     double
     n_steps_of_phase(const double duration,
                      const double requested_time_step) const;
+    /// With @p within_phase, the mesh of the current phase changed: the
+    /// time step of the rest of its current segment (state.clock) and the
+    /// integrator are set up again, its state kept.
     void
     prepare_phase(const TimeIntegration::Scheme scheme,
                   const double                  requested_time_step,
-                  const double                  duration);
+                  const double                  duration,
+                  const bool                    within_phase = false);
     /**
      * Acceleration from M a = f - K u - C v - F_contact on the free DoFs.
      */
@@ -605,6 +647,11 @@ namespace rupture
     /// pattern built once, at the first use (ghosted_copy()).
     mutable std::unique_ptr<GhostedVectors> ghosts;
     Output::Statistics                      statistics;
+    /// <Mesh refinement>: the mesh that follows the rupture.
+    Adaptivity::Parameters mesh_refinement;
+    /// Wall time of the adaptations of the mesh (s), and their number.
+    double       adaptation_seconds = 0;
+    unsigned int n_adaptations      = 0;
   };
 } // namespace rupture
 

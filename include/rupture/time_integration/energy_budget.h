@@ -36,6 +36,10 @@ namespace rupture
       double absorbed = 0;
       /// Work done on the fault: penalty spring energy plus friction.
       double fault_work = 0;
+      /// Kinetic plus strain energy that the changes of the mesh added (the
+      /// interpolation of the fields to the new mesh; negative if it took
+      /// energy away).
+      double remeshing = 0;
 
       /// Total force applied to the body at the current time (loads plus
       /// reactions on kinematic boundaries).
@@ -58,6 +62,7 @@ namespace rupture
         records["energy/damping dissipation"] = damping_dissipation;
         records["energy/absorbed"]            = absorbed;
         records["energy/fault work"]          = fault_work;
+        records["energy/remeshing"]           = remeshing;
       }
       void
       load(const BinaryIO::Records &records)
@@ -70,6 +75,9 @@ namespace rupture
         damping_dissipation = record(records, "energy/damping dissipation");
         absorbed            = record(records, "energy/absorbed");
         fault_work          = record(records, "energy/fault work");
+        // (Checkpoints of runs on one mesh before this record had none.)
+        const auto r = records.find("energy/remeshing");
+        remeshing    = (r != records.end()) ? r->second : 0.;
       }
 
       /// What the budget misses: zero when energy is conserved.
@@ -77,7 +85,7 @@ namespace rupture
       balance_error() const
       {
         return kinetic + strain + damping_dissipation + fault_work -
-               external_work - initial;
+               external_work - initial - remeshing;
       }
     };
   } // namespace TimeIntegration

@@ -34,6 +34,12 @@ namespace rupture
       double phase_start_time = 0;
       /// Steps done in the current phase.
       unsigned int steps_in_phase = 0;
+      /// The time step may change within a phase (after the mesh changed):
+      /// the steps of the current step size started at the absolute time
+      /// segment_start_time, after segment_first_step steps of the phase.
+      /// A phase of one step size has one segment, from its start.
+      double       segment_start_time = 0;
+      unsigned int segment_first_step = 0;
 
       /**
        * The number of steps of @p dt that cover @p duration (the last one
@@ -56,14 +62,52 @@ namespace rupture
         const double start = (steps_done > 0) ? phase_start_time : now;
         phase_start_time   = start;
         steps_in_phase     = steps_done;
+        if (steps_done == 0)
+          {
+            segment_start_time = start;
+            segment_first_step = 0;
+          }
         return start;
       }
 
       /**
-       * Enter step @p i of the @p n_steps steps of @p dt that cover
-       * @p duration from the phase's start: sets phase_time and the steps
-       * done, and returns the absolute time at the end of the step (the
-       * phase's end time at the last step).
+       * The time the current segment has left of a phase of @p duration.
+       */
+      double
+      segment_duration(const double duration) const
+      {
+        return (segment_first_step == 0) ?
+                 duration :
+                 (phase_start_time + duration) - segment_start_time;
+      }
+
+      /**
+       * The number of steps of the phase of @p duration: those before the
+       * current segment and the steps of @p dt that cover the rest.
+       */
+      double
+      steps_of_phase(const double duration, const double dt) const
+      {
+        return segment_first_step +
+               steps_to_cover(segment_duration(duration), dt);
+      }
+
+      /**
+       * Start a segment of a new step size after @p steps_done steps of
+       * the phase, at the absolute time @p now.
+       */
+      void
+      start_segment(const double now, const unsigned int steps_done)
+      {
+        segment_start_time = now;
+        segment_first_step = steps_done;
+      }
+
+      /**
+       * Enter step @p i of the @p n_steps steps (of @p dt in the current
+       * segment) that cover @p duration from the phase's start: sets
+       * phase_time and the steps done, and returns the absolute time at
+       * the end of the step (the phase's end time at the last step).
        */
       double
       enter_step(const unsigned int i,
@@ -74,9 +118,13 @@ namespace rupture
         const double start    = phase_start_time;
         const double end_time = start + duration;
         steps_in_phase        = i;
+        const double in_segment =
+          (segment_start_time - start) + (i - segment_first_step) * dt;
         phase_time =
-          (start - dynamic_start) + ((i == n_steps) ? duration : i * dt);
-        return (i == n_steps) ? end_time : start + i * dt;
+          (start - dynamic_start) + ((i == n_steps) ? duration : in_segment);
+        return (i == n_steps) ?
+                 end_time :
+                 segment_start_time + (i - segment_first_step) * dt;
       }
 
       /**

@@ -40,14 +40,16 @@ namespace rupture
       void
       save(BinaryIO::Records &records) const
       {
-        records["time/time"]             = time;
-        records["time/time step"]        = time_step;
-        records["time/step"]             = step;
-        records["time/phase time"]       = clock.phase_time;
-        records["time/dynamic start"]    = clock.dynamic_start;
-        records["time/in dynamic phase"] = clock.in_dynamic_phase;
-        records["time/phase start time"] = clock.phase_start_time;
-        records["time/steps in phase"]   = clock.steps_in_phase;
+        records["time/time"]               = time;
+        records["time/time step"]          = time_step;
+        records["time/step"]               = step;
+        records["time/phase time"]         = clock.phase_time;
+        records["time/dynamic start"]      = clock.dynamic_start;
+        records["time/in dynamic phase"]   = clock.in_dynamic_phase;
+        records["time/phase start time"]   = clock.phase_start_time;
+        records["time/steps in phase"]     = clock.steps_in_phase;
+        records["time/segment start time"] = clock.segment_start_time;
+        records["time/segment first step"] = clock.segment_first_step;
       }
       void
       load(const BinaryIO::Records &records)
@@ -62,6 +64,14 @@ namespace rupture
         clock.phase_start_time = record(records, "time/phase start time");
         clock.steps_in_phase =
           static_cast<unsigned int>(record(records, "time/steps in phase"));
+        // (Checkpoints before variable steps had one segment per phase.)
+        const auto start = records.find("time/segment start time");
+        const auto first = records.find("time/segment first step");
+        clock.segment_start_time =
+          (start != records.end()) ? start->second : clock.phase_start_time;
+        clock.segment_first_step = (first != records.end()) ?
+                                     static_cast<unsigned int>(first->second) :
+                                     0;
       }
     };
   } // namespace TimeIntegration
