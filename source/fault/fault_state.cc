@@ -282,11 +282,19 @@ namespace rupture
     std::vector<Point<dim>>
     Fault<dim>::active_locations(const double rate,
                                  const double time,
-                                 const double memory) const
+                                 const double memory,
+                                 const bool   overstressed) const
     {
       std::vector<Point<dim>> active;
+      const bool              by_strength =
+        overstressed && !friction_law->depends_on_slip_rate();
       for (const auto &pair : pairs)
         {
+          if (by_strength && pair.trial.status == ContactStatus::slip)
+            {
+              active.push_back(pair.location);
+              continue;
+            }
           const bool ruptured =
             pair.rupture_time >= 0 &&
             (memory < 0 || time - pair.rupture_time < memory);

@@ -64,7 +64,8 @@ namespace rupture
       for (const auto &p :
            fault->active_locations(mesh_refinement.slip_rate_threshold,
                                    state.clock.phase_time,
-                                   mesh_refinement.coarsening_delay))
+                                   mesh_refinement.coarsening_delay,
+                                   steps_done == 0))
         for (unsigned int d = 0; d < dim; ++d)
           mine.push_back(p[d]);
       for (const auto &from :

@@ -266,6 +266,19 @@ namespace rupture
   Simulator<dim>::run_from_start()
   {
     initialize_state();
+    // A mesh that follows the rupture starts refined where the fault slips
+    // from the first step; the initial state is then that of the new mesh.
+    if (mesh_refinement.enabled() &&
+        adapt_mesh(time_parameters.loading_phase ?
+                     time_parameters.loading_end_time :
+                     time_parameters.end_time,
+                   requested_time_step(),
+                   0))
+      {
+        interpolate_initial_conditions();
+        initialize_state();
+        energy.remeshing = 0;
+      }
     record_memory("initial state");
 
     std::vector<std::string> columns = {"Time step number",

@@ -430,12 +430,16 @@ namespace rupture
        * @p rate, or whose rupture (NodeState::rupture_time) is less than
        * @p memory before @p time (both since the start of the dynamic
        * phase; @p memory < 0: any rupture): where a mesh that follows the
-       * rupture is refined.
+       * rupture is refined. With @p overstressed also the pairs whose
+       * traction exceeds the strength of a law that does not depend on the
+       * slip rate (the last assemble() says so): before the first step,
+       * the nucleation patch that slips from it.
        */
       std::vector<Point<dim>>
       active_locations(const double rate,
                        const double time,
-                       const double memory) const;
+                       const double memory,
+                       const bool   overstressed = false) const;
 
       unsigned int
       n_split_nodes() const;

@@ -163,7 +163,8 @@ namespace rupture
      * step @p requested_time_step), @p steps_done of its steps done: flag,
      * refine and coarsen, carry the state over, and set up the operators,
      * the time step and the integrator again. Returns whether the mesh
-     * changed.
+     * changed. With @p steps_done = 0, before the first step of a run, the
+     * nodes that slip from the start (overstressed) count as active too.
      */
     bool
     adapt_mesh(const double       duration,
