@@ -26,7 +26,8 @@ namespace rupture
                                                     "velocity",
                                                     "stress",
                                                     "material_id",
-                                                    "mpi_rank"};
+                                                    "mpi_rank",
+                                                    "level"};
 
       /**
        * What one finite element of the collection needs for the stress:
@@ -217,6 +218,13 @@ namespace rupture
             std::fill(values.begin(), values.end(), my_rank);
             p.cell_fields.push_back(
               encoder.add(VtuFile::Section::cell_data, "mpi_rank", 1, values));
+          }
+        if (write_field[5])
+          {
+            for (unsigned int c = 0; c < values.size(); ++c)
+              values[c] = p.cells[c]->level();
+            p.cell_fields.push_back(
+              encoder.add(VtuFile::Section::cell_data, "level", 1, values));
           }
         for (const int i : touched)
           point_of[i] = -1;

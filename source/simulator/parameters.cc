@@ -199,10 +199,12 @@ namespace rupture
         "Volume fields",
         "displacement, velocity, stress, material_id, mpi_rank",
         Patterns::MultipleSelection(
-          "displacement|velocity|stress|material_id|mpi_rank"),
+          "displacement|velocity|stress|material_id|mpi_rank|level"),
         "The fields of the volume snapshots: displacement and velocity at "
-        "the mesh nodes; the stress tensor (Pa), the material id and the MPI "
-        "rank on the cells (the stress at each cell's centre; ParaView's "
+        "the mesh nodes; the stress tensor (Pa), the material id, the MPI "
+        "rank and the refinement level (0: the scene's coarse cells; it "
+        "shows a mesh that follows the rupture) on the cells (the stress at "
+        "each cell's centre; ParaView's "
         "Cell Data to Point Data filter smooths it). Leaving out the stress "
         "saves about a third of a snapshot's time and half of its size. "
         "Empty: the mesh only.");
@@ -588,10 +590,6 @@ namespace rupture
     mesh_refinement.parse_parameters(prm);
     if (mesh_refinement.enabled())
       {
-        AssertThrow(fault != nullptr,
-                    ExcMessage("<Mesh refinement/Criteria> = rupture front "
-                               "follows a fault, but <Fault/Model> = none. "
-                               "Allowed: a fault model, or no criterion."));
         AssertThrow(!linear_solver.multigrid(),
                     ExcMessage("<Solver/Preconditioner> = multigrid cannot "
                                "follow a mesh that <Mesh refinement/Criteria> "
@@ -608,6 +606,10 @@ namespace rupture
                                "the stable step of each mesh), but it is " +
                                std::to_string(time_parameters.time_step) +
                                " s."));
+        AssertThrow(fault != nullptr,
+                    ExcMessage("<Mesh refinement/Criteria> = rupture front "
+                               "follows a fault, but <Fault/Model> = none. "
+                               "Allowed: a fault model, or no criterion."));
       }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();

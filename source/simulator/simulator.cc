@@ -565,6 +565,8 @@ namespace rupture
           fault->set_time(state.time);
 
         integrator->step();
+        dof_steps += dof_handler.n_dofs();
+        peak_dofs = std::max(peak_dofs, double(dof_handler.n_dofs()));
         check_finite(state.displacement, "displacement");
         // The displacement may still be finite when the energies computed
         // from it overflow: that is a blow-up too, and no value that is

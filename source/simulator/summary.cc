@@ -27,11 +27,17 @@ namespace rupture
           << "   Time loop: " << state.step << " steps of " << n_dofs
           << " DoFs in " << time_loop_seconds << " s on " << n_ranks
           << " rank(s): "
-          << (state.step > 0 ? 1e9 * time_loop_seconds * n_ranks /
-                                 (double(n_dofs) * state.step) :
-                               0.)
-          << " ns per DoF-step per core\n"
-          << "   Peak memory: " << peak_max / 1048576.
+          << (state.step > 0 ?
+                1e9 * time_loop_seconds * n_ranks /
+                  (mesh_refinement.enabled() ? dof_steps :
+                                               double(n_dofs) * state.step) :
+                0.)
+          << " ns per DoF-step per core\n";
+    if (mesh_refinement.enabled())
+      pcout << "   Mesh refinement: " << n_adaptations << " adaptations in "
+            << adaptation_seconds << " s (part of the time loop), " << peak_dofs
+            << " DoFs at the peak, " << dof_steps << " DoF-steps\n";
+    pcout << "   Peak memory: " << peak_max / 1048576.
           << " MB on the largest rank, " << peak_sum / 1048576.
           << " MB on all ranks, " << peak_sum / double(n_dofs)
           << " B per DoF\n";
@@ -154,8 +160,14 @@ namespace rupture
         << "  \"dimension\": " << dim << ",\n"
         << "  \"ranks\": " << n_ranks << ",\n"
         << "  \"dofs\": " << dof_handler.n_dofs() << ",\n"
-        << "  \"steps\": " << state.step << ",\n"
-        << "  \"time\": " << json_number(state.clock.phase_time) << ",\n"
+        << "  \"steps\": " << state.step << ",\n";
+    if (mesh_refinement.enabled())
+      out << "  \"mesh adaptations\": " << n_adaptations << ",\n"
+          << "  \"peak dofs\": " << json_number(peak_dofs) << ",\n"
+          << "  \"dof-steps\": " << json_number(dof_steps) << ",\n"
+          << "  \"adaptation wall time\": "
+          << json_number(test_mode ? 0. : adaptation_seconds) << ",\n";
+    out << "  \"time\": " << json_number(state.clock.phase_time) << ",\n"
         << "  \"time since the start of the run\": " << json_number(state.time)
         << ",\n"
         << "  \"wall time\": "

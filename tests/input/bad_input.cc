@@ -258,6 +258,20 @@ main(int argc, char **argv)
          "Fault/Plane point=0, 250",
          "--set",
          "Fault/Plane normal=0, 1"});
+  check("mesh refinement with multigrid",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=rupture front",
+         "--set",
+         "Solver/Preconditioner=multigrid"});
+  check("mesh refinement with a fixed explicit time step",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=rupture front",
+         "--set",
+         "Time integration/Scheme=explicit central difference"});
+  check("mesh refinement without a fault",
+        {"valid.prm", "--set", "Mesh refinement/Criteria=rupture front"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

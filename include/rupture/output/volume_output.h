@@ -125,7 +125,7 @@ namespace rupture
         std::vector<std::array<int, dim>> point_dofs;
         /// Points, connectivity, offsets and types, encoded.
         std::vector<VtuFile::Array> mesh;
-        /// The material ids and MPI ranks (as chosen), encoded.
+        /// The material ids, MPI ranks and levels (as chosen), encoded.
         std::vector<VtuFile::Array> cell_fields;
       };
 
@@ -144,7 +144,7 @@ namespace rupture
       std::vector<std::pair<double, std::string>> records;
       std::string file_prefix = "solution", pvd_name = "solution.pvd";
       /// Whether each of available_fields() is written.
-      std::array<bool, 5> write_field{};
+      std::array<bool, 6> write_field{};
 
       std::vector<Piece>      pieces;
       const DoFHandler<dim>  *pieces_dof_handler = nullptr;

@@ -650,9 +650,12 @@ namespace rupture
     Output::Statistics                      statistics;
     /// <Mesh refinement>: the mesh that follows the rupture.
     Adaptivity::Parameters mesh_refinement;
-    /// Wall time of the adaptations of the mesh (s), and their number.
+    /// Wall time of the adaptations of the mesh (s), and their number;
+    /// the DoFs summed over the steps this process ran, and their peak.
     double       adaptation_seconds = 0;
     unsigned int n_adaptations      = 0;
+    double       dof_steps          = 0;
+    double       peak_dofs          = 0;
   };
 } // namespace rupture
 
