@@ -7,10 +7,13 @@ import json
 def test_runs_share_the_finest_size(script):
     study = script("adaptive-study")
     runs = dict(study.cases_of(300.0))
-    assert runs["h"] == []
-    assert "Scene/Box/Number of cells=100,50" in runs["2h"]
-    # Cells four times as large, refined two levels where the rupture is.
-    assert "Scene/Box/Number of cells=50,25" in runs["adaptive"]
+    assert "Scene/Box/Number of cells=200,104" in runs["h"]
+    assert "Scene/Box/Number of cells=100,52" in runs["2h"]
+    # Cells four times as large, refined two levels where the rupture is;
+    # every run in the same box.
+    assert "Scene/Box/Number of cells=50,26" in runs["adaptive"]
+    assert all("Scene/Box/Lower corner=-30000, -15600" in sets
+               for sets in runs.values())
     assert "Mesh refinement/Levels=2" in runs["adaptive"]
     band = runs["band"]
     assert "Discretization/Refinement region levels=2" in band

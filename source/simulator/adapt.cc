@@ -9,6 +9,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <cmath>
 #include <iomanip>
 
 namespace rupture
@@ -48,14 +49,36 @@ namespace rupture
     const double       wall_start = MPI_Wtime();
     using Adaptivity::Decision;
 
+    timer.enter_subsection("Adapt mesh: criteria");
     // The band ahead of the front: as far as a P wave travels until the
-    // next adaptation.
+    // next adaptation. The explicit step follows the finest cell: while
+    // the fault's cells lack levels that this adaptation adds, the steps
+    // to come are shorter by as many halvings.
     double p_wave_speed = 0;
     for (unsigned int m = 0; m < materials.n_materials(); ++m)
       p_wave_speed = std::max(p_wave_speed, materials.get(m).p_wave_speed());
-    const double band =
-      p_wave_speed * mesh_refinement.interval * state.time_step +
-      mesh_refinement.extra_band;
+    unsigned int finest_now = 0, finest_then = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && fault->side(cell) == 0)
+        for (const auto f : cell->face_indices())
+          if (!cell->at_boundary(f) &&
+              fault->side(cell->neighbor(f)) != fault->side(cell))
+            {
+              finest_now  = std::max<unsigned int>(finest_now, cell->level());
+              finest_then = std::max(finest_then,
+                                     base_level(cell) + mesh_refinement.levels);
+            }
+    finest_now  = dealii::Utilities::MPI::max(finest_now, communicator);
+    finest_then = dealii::Utilities::MPI::max(finest_then, communicator);
+    const double coming_step =
+      (current_scheme() ==
+         TimeIntegration::Scheme::explicit_central_difference &&
+       finest_then > finest_now) ?
+        std::ldexp(state.time_step,
+                   -static_cast<int>(finest_then - finest_now)) :
+        state.time_step;
+    const double band = p_wave_speed * mesh_refinement.interval * coming_step +
+                        mesh_refinement.extra_band;
     // The active nodes of the whole fault, on every process: both cells
     // of a fault face decide alike from them.
     std::vector<Point<dim>> active;
@@ -139,17 +162,24 @@ namespace rupture
             flagged = true;
         if (dealii::Utilities::MPI::max(flagged ? 1 : 0, communicator) == 0)
           break;
+        timer.leave_subsection();
         pcout.set_condition(false);
-        n_without += execute_refinement();
-        // Both cells of every fault face alike (the mesh's balance may
-        // have refined one side only, or coarsened one).
-        for (unsigned int k = 0; k < 2 * mesh_refinement.levels + 2; ++k)
-          if (flag_fault_alike())
-            n_without += execute_refinement();
+        {
+          TimerOutput::Scope t(timer, "Adapt mesh: transfer");
+          n_without += execute_refinement();
+          // Both cells of every fault face alike (the mesh's balance may
+          // have refined one side only, or coarsened one).
+          for (unsigned int k = 0; k < 2 * mesh_refinement.levels + 2; ++k)
+            if (flag_fault_alike())
+              n_without += execute_refinement();
+        }
+        timer.enter_subsection("Adapt mesh: criteria");
         changed = true;
       }
+    timer.leave_subsection();
     if (!changed)
       return false;
+    TimerOutput::Scope set_up(timer, "Adapt mesh: set-up");
 
     // The operators of the new mesh, the time step of the rest of the
     // phase and the integrator, and the forces of the last step that the

@@ -16,9 +16,12 @@ namespace rupture
   unsigned int
   Simulator<dim>::execute_refinement()
   {
-    // The fields and the fault's state, with ghost entries, attached to
-    // the mesh.
-    const std::vector<VectorType *> fields = checkpoint_fields();
+    // The motion and the fault's state, with ghost entries, attached to
+    // the mesh. (The forces of the energy sums belong to their mesh: the
+    // callers compute them anew, refresh_step_forces().)
+    const std::vector<VectorType *> fields = {&state.displacement,
+                                              &state.velocity,
+                                              &state.acceleration};
     std::vector<VectorType>         carried;
     for (VectorType *f : fields)
       carried.push_back(*f);

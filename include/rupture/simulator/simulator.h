@@ -151,9 +151,10 @@ namespace rupture
     /// process flagged one.
     bool
     flag_fault_alike();
-    /// Refine and coarsen the mesh as flagged, carry the fields of
-    /// checkpoint_fields() and the fault's state to the new mesh and set
-    /// up its DoFs (adapt.cc). Returns the number of new fault pairs that
+    /// Refine and coarsen the mesh as flagged, carry the displacement,
+    /// velocity and acceleration and the fault's state to the new mesh and
+    /// set up its DoFs (refine.cc); the energy sums' forces are left to
+    /// refresh_step_forces(). Returns the number of new fault pairs that
     /// had no old pair near.
     unsigned int
     execute_refinement();
