@@ -19,10 +19,11 @@ namespace rupture
   Simulator<dim>::base_level(
     const typename Triangulation<dim>::cell_iterator &cell) const
   {
-    // As make_mesh() refines: the global refinements, then one level more
+    // As make_mesh() refines: the scene's own levels and the global
+    // refinements, then one level more
     // for each ancestor (or the cell itself) whose centre lies in the
     // static refinement region, up to its number of levels.
-    unsigned int level = n_global_refinements;
+    unsigned int level = scene_levels + n_global_refinements;
     for (unsigned int k = 0; k < n_region_refinements; ++k)
       {
         if (level > static_cast<unsigned int>(cell->level()))

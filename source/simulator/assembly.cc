@@ -559,8 +559,16 @@ namespace rupture
     // cell took minutes on the full Northeast-Japan mesh. The offsets are
     // compared to 1e-7 of the smallest cell (a relative change of the
     // eigenvalue of that order).
-    std::map<std::vector<std::int64_t>, double> seen;
-    const double unit = 1e-7 * GridTools::minimal_cell_diameter(triangulation);
+    // The shapes are remembered from one call to the next (a changed mesh
+    // keeps most of its cells); the unit of the first mesh stays. A
+    // shape's value is an upper bound of its largest eigenvalue (the
+    // largest found when it was first seen), so a later mesh's step is
+    // safe, if perhaps smaller than its own cells need.
+    auto &seen = element_frequencies.omega2;
+    if (element_frequencies.unit == 0)
+      element_frequencies.unit =
+        1e-7 * GridTools::minimal_cell_diameter(triangulation);
+    const double unit = element_frequencies.unit;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {

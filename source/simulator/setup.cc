@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 
 
 namespace rupture
@@ -148,6 +149,15 @@ namespace rupture
                       available,
                       n_nodes);
     scene->create_coarse_mesh(triangulation);
+    // A scene may refine its coarse blocks itself (a box's tree levels):
+    // the levels a mesh that follows the rupture never coarsens.
+    {
+      unsigned int level = std::numeric_limits<unsigned int>::max();
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->is_locally_owned())
+          level = std::min<unsigned int>(level, cell->level());
+      scene_levels = dealii::Utilities::MPI::min(level, communicator);
+    }
     check_mesh_size(triangulation.n_global_active_cells(),
                     "the scene's coarse mesh has",
                     available,

@@ -41,7 +41,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -364,6 +366,14 @@ namespace rupture
     assemble_load_vector(const double time, VectorType &load) const;
     double
     compute_highest_frequency() const;
+    /// What compute_highest_frequency() found for each cell shape (its
+    /// key's unit, and the squared frequency by shape).
+    struct ElementFrequencies
+    {
+      double                                      unit = 0;
+      std::map<std::vector<std::int64_t>, double> omega2;
+    };
+    mutable ElementFrequencies element_frequencies;
     double
     compute_l2_error(const double time) const;
 
@@ -651,6 +661,9 @@ namespace rupture
     Output::Statistics                      statistics;
     /// <Mesh refinement>: the mesh that follows the rupture.
     Adaptivity::Parameters mesh_refinement;
+    /// The level of the scene's cells as it builds them (a box of blocks
+    /// refines its blocks itself): the base of base_level().
+    unsigned int scene_levels = 0;
     /// Wall time of the adaptations of the mesh (s), and their number;
     /// the DoFs summed over the steps this process ran, and their peak.
     double       adaptation_seconds = 0;
