@@ -7,7 +7,9 @@
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/lac/la_parallel_vector.h>
 
+#include <algorithm>
 #include <iomanip>
 
 namespace rupture
@@ -28,29 +30,46 @@ namespace rupture
     if (fault)
       for (auto &f : fault->state_fields(locally_owned_dofs))
         carried.push_back(std::move(f));
-    std::vector<VectorType>         ghosted(carried.size());
-    std::vector<const VectorType *> in;
+    // A field is one function of the mesh only if its constrained DoFs
+    // follow their constraints: a hanging DoF that becomes a regular one is
+    // then the same from its old and its new cells. (The fault's pairs that
+    // existed before keep their own state by location, hanging ones
+    // included.)
+    for (auto &c : carried)
+      distribute_hanging(c);
+    // The transfer reads and writes every DoF of every cell: through
+    // deal.II's own vectors (direct indexing), not Trilinos' (a map lookup
+    // per entry), several times faster.
+    using Distributed = LinearAlgebra::distributed::Vector<double>;
+    std::vector<Distributed>         values(carried.size());
+    std::vector<const Distributed *> in;
     for (unsigned int k = 0; k < carried.size(); ++k)
       {
-        ghosted[k].reinit(locally_owned_dofs,
-                          locally_relevant_dofs,
-                          communicator);
-        ghosted[k] = carried[k];
-        in.push_back(&ghosted[k]);
+        values[k].reinit(locally_owned_dofs,
+                         locally_relevant_dofs,
+                         communicator);
+        std::copy(carried[k].begin(), carried[k].end(), values[k].begin());
+        values[k].update_ghost_values();
+        in.push_back(&values[k]);
       }
-    parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
+    parallel::distributed::SolutionTransfer<dim, Distributed> transfer(
       dof_handler);
     transfer.prepare_for_coarsening_and_refinement(in);
     triangulation.execute_coarsening_and_refinement();
 
     setup_dofs();
-    std::vector<VectorType *> out;
-    for (auto &c : carried)
+    std::vector<Distributed *> out;
+    for (auto &v : values)
       {
-        c.reinit(locally_owned_dofs, communicator);
-        out.push_back(&c);
+        v.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+        out.push_back(&v);
       }
     transfer.interpolate(out);
+    for (unsigned int k = 0; k < carried.size(); ++k)
+      {
+        carried[k].reinit(locally_owned_dofs, communicator);
+        std::copy(values[k].begin(), values[k].end(), carried[k].begin());
+      }
     for (unsigned int k = 0; k < fields.size(); ++k)
       {
         *fields[k] = carried[k];
