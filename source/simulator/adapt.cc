@@ -170,9 +170,10 @@ namespace rupture
           n_without += execute_refinement();
           // Both cells of every fault face alike (the mesh's balance may
           // have refined one side only, or coarsened one).
-          for (unsigned int k = 0; k < 2 * mesh_refinement.levels + 2; ++k)
-            if (flag_fault_alike())
-              n_without += execute_refinement();
+          for (unsigned int k = 0;
+               k < 2 * mesh_refinement.levels + 2 && flag_fault_alike();
+               ++k)
+            n_without += execute_refinement();
         }
         timer.enter_subsection("Adapt mesh: criteria");
         changed = true;

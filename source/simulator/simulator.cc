@@ -251,9 +251,7 @@ namespace rupture
       // phase's first.
       prepare_phase(current_scheme(),
                     requested_time_step(),
-                    time_parameters.loading_phase ?
-                      time_parameters.loading_end_time :
-                      time_parameters.end_time,
+                    phase_duration(),
                     true);
     integrator->load(checkpoints.records);
     run_phases(state.clock.steps_in_phase);
@@ -269,11 +267,7 @@ namespace rupture
     // A mesh that follows the rupture starts refined where the fault slips
     // from the first step; the initial state is then that of the new mesh.
     if (mesh_refinement.enabled() &&
-        adapt_mesh(time_parameters.loading_phase ?
-                     time_parameters.loading_end_time :
-                     time_parameters.end_time,
-                   requested_time_step(),
-                   0))
+        adapt_mesh(phase_duration(), requested_time_step(), 0))
       {
         interpolate_initial_conditions();
         initialize_state();

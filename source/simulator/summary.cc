@@ -35,8 +35,10 @@ namespace rupture
           << " ns per DoF-step per core\n";
     if (mesh_refinement.enabled())
       pcout << "   Mesh refinement: " << n_adaptations << " adaptations in "
-            << adaptation_seconds << " s (part of the time loop), " << peak_dofs
-            << " DoFs at the peak, " << dof_steps << " DoF-steps\n";
+            << adaptation_seconds
+            << " s (the first before the time loop, the others in it), "
+            << peak_dofs << " DoFs at the peak, " << dof_steps
+            << " DoF-steps\n";
     pcout << "   Peak memory: " << peak_max / 1048576.
           << " MB on the largest rank, " << peak_sum / 1048576.
           << " MB on all ranks, " << peak_sum / double(n_dofs)

@@ -182,6 +182,15 @@ namespace rupture
                time_parameters.loading_time_step :
                time_parameters.time_step;
     }
+    /// The duration of the current phase (the loading phase's until the
+    /// dynamic phase has started).
+    double
+    phase_duration() const
+    {
+      return (time_parameters.loading_phase && !state.clock.in_dynamic_phase) ?
+               time_parameters.loading_end_time :
+               time_parameters.end_time;
+    }
     /// The level a cell of the mesh had before any adaptation: the global
     /// refinements and the static refinement region's levels.
     unsigned int
