@@ -190,6 +190,17 @@ namespace rupture
     fault->set_time(state.time);
     state.clock.start_segment(state.time, steps_done);
     prepare_phase(current_scheme(), requested_time_step, duration, true);
+    if (current_scheme() == TimeIntegration::Scheme::implicit_newmark)
+      {
+        // Newmark's energy identity holds for an acceleration that is in
+        // balance with the forces (M a = f - K u - C v - contact), which
+        // the interpolated one is not on the new mesh.
+        VectorType load(locally_owned_dofs, communicator);
+        assemble_load_vector(state.time, load);
+        energy.contact_force = 0;
+        fault->add_contact_force(hanging_constraints, energy.contact_force);
+        compute_acceleration(load);
+      }
     refresh_step_forces();
     quiet.out.set_condition(quiet.was);
 

@@ -1,3 +1,4 @@
+#include <rupture/operators/element_frequency.h>
 #include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
@@ -17,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace rupture
@@ -83,6 +85,18 @@ namespace rupture
             std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
       return key;
     }
+
+    /// The edge lengths of @p cell if it is an axis-aligned box.
+    template <typename CellIterator>
+    auto
+    box_edges(const CellIterator &cell)
+    {
+      constexpr int dim = CellIterator::AccessorType::dimension;
+      std::array<Point<dim>, (1u << dim)> vertices;
+      for (const unsigned int v : cell->vertex_indices())
+        vertices[v] = cell->vertex(v);
+      return Operators::box_edges<dim>(vertices);
+    }
   } // namespace
 
 
@@ -127,6 +141,7 @@ namespace rupture
     FullMatrix<double>                   k, mass;
     Vector<double>                       lumped, absorbing, load;
     std::vector<types::global_dof_index> dofs;
+    std::vector<unsigned int>            component;
 
     Tensor<1, dim> g;
     g[dim - 1] = -gravity;
@@ -149,10 +164,22 @@ namespace rupture
           hp_values.reinit(cell);
           const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
           const unsigned int   n         = fe_values.dofs_per_cell;
-          k.reinit(n, n);
-          mass.reinit(n, n);
+          if (need_matrices)
+            k.reinit(n, n);
+          if (need_mass)
+            mass.reinit(n, n);
           dofs.resize(n);
           cell->get_dof_indices(dofs);
+          // Every shape function has one nonzero component: the one of its
+          // own scalar element (FE_Q per component, FE_Nothing for the
+          // other side). Its value there is all that gravity and the lumped
+          // mass need, and far cheaper than the vector of values at high
+          // degree.
+          const FiniteElement<dim> &fe = fe_values.get_fe();
+          component.resize(n);
+          for (unsigned int i = 0; i < n; ++i)
+            component[i] =
+              fe.system_to_component_index(i).first - u.first_vector_component;
 
           if (need_matrices)
             local_elasticity_matrices(
@@ -171,8 +198,9 @@ namespace rupture
           if (gravity != 0)
             for (const unsigned int q : fe_values.quadrature_point_indices())
               for (unsigned int i = 0; i < n; ++i)
-                load(i) +=
-                  m.density * (g * fe_values[u].value(i, q)) * fe_values.JxW(q);
+                load(i) += m.density *
+                           (g[component[i]] * fe_values.shape_value(i, q)) *
+                           fe_values.JxW(q);
 
           if (use_lumped_mass)
             {
@@ -184,7 +212,9 @@ namespace rupture
               for (const unsigned int q : lv.quadrature_point_indices())
                 for (unsigned int i = 0; i < n; ++i)
                   lumped(i) +=
-                    m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+                    m.density *
+                    dealii::Utilities::fixed_power<2>(lv.shape_value(i, q)) *
+                    lv.JxW(q);
               hanging_constraints.distribute_local_to_global(lumped,
                                                              dofs,
                                                              lumped_mass);
@@ -551,8 +581,11 @@ namespace rupture
     hp::FEValues<dim>          hp_lumped(fe_collection,
                                 q_lumped,
                                 update_values | update_JxW_values);
-    FullMatrix<double>         k;
-    double                     omega2_max = 0;
+    // Axis-aligned boxes are assembled from the unit cell's matrices.
+    const Operators::BoxElementFrequency<dim> boxes(fe_degree);
+    FullMatrix<double>                        k;
+    LAPACKFullMatrix<double>                  a;
+    double                                    omega2_max = 0;
     // A cell that is a translate of one already seen (same material, same
     // side, same vertex offsets) has the same eigenvalues: structured
     // meshes have few distinct cells, and a dense eigenvalue problem per
@@ -561,61 +594,83 @@ namespace rupture
     // eigenvalue of that order).
     // The shapes are remembered from one call to the next (a changed mesh
     // keeps most of its cells); the unit of the first mesh stays. A
-    // shape's value is an upper bound of its largest eigenvalue (the
-    // largest found when it was first seen), so a later mesh's step is
-    // safe, if perhaps smaller than its own cells need.
+    // shape's value is an upper bound of its largest eigenvalue, so a
+    // later mesh's step is safe, if perhaps smaller than its own cells
+    // need.
     auto &seen = element_frequencies.omega2;
     if (element_frequencies.unit == 0)
       element_frequencies.unit =
         1e-7 * GridTools::minimal_cell_diameter(triangulation);
     const double unit = element_frequencies.unit;
+
+    // The matrix M^-1/2 K M^-1/2 of one cell.
+    const auto scaled_matrix = [&](const auto &cell) {
+      const auto &m = materials.get(cell->material_id());
+      if (const auto h = box_edges(cell))
+        return boxes.scaled_matrix(*h, m, a);
+      const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+      hp_values.reinit(cell);
+      hp_lumped.reinit(cell);
+      const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+      const FEValues<dim> &lv        = hp_lumped.get_present_fe_values();
+      const unsigned int   n         = fe_values.dofs_per_cell;
+      k.reinit(n, n);
+      local_elasticity_matrices(fe_values, u, m, k, nullptr);
+      std::vector<double> mass(n, 0.);
+      for (const unsigned int q : lv.quadrature_point_indices())
+        for (unsigned int i = 0; i < n; ++i)
+          mass[i] += m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+      a.reinit(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
+    };
+
+    // The shapes not seen before, each with an upper bound of its largest
+    // eigenvalue that is cheap for boxes (Gershgorin's, of the matrix
+    // assembled without quadrature; infinite for other cells). Taken from
+    // the largest bound down, the first few shapes fix the maximum and
+    // the others are passed over by their bound, without an eigenvalue
+    // problem: on a graded mesh most shapes are larger than the smallest.
+    struct NewShape
+    {
+      std::vector<std::int64_t>                      key;
+      typename DoFHandler<dim>::active_cell_iterator cell;
+      double                                         bound;
+    };
+    std::vector<NewShape>               new_shapes;
+    std::set<std::vector<std::int64_t>> queued;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto key = cell_shape_key(cell, unit);
+          auto key = cell_shape_key(cell, unit);
           if (const auto known = seen.find(key); known != seen.end())
+            omega2_max = std::max(omega2_max, known->second);
+          else if (queued.insert(key).second)
             {
-              omega2_max = std::max(omega2_max, known->second);
-              continue;
-            }
-          const auto &m = materials.get(cell->material_id());
-          const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
-          hp_values.reinit(cell);
-          hp_lumped.reinit(cell);
-          const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
-          const FEValues<dim> &lv        = hp_lumped.get_present_fe_values();
-          const unsigned int   n         = fe_values.dofs_per_cell;
-          k.reinit(n, n);
-          local_elasticity_matrices(fe_values, u, m, k, nullptr);
-          std::vector<double> mass(n, 0.);
-          for (const unsigned int q : lv.quadrature_point_indices())
-            for (unsigned int i = 0; i < n; ++i)
-              mass[i] +=
-                m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
-          // M^-1/2 K M^-1/2 is symmetric: only its eigenvalues above the
-          // largest found so far matter, up to Gershgorin's bound.
-          LAPACKFullMatrix<double> a(n, n);
-          double                   gershgorin = 0;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              double row = 0;
-              for (unsigned int j = 0; j < n; ++j)
+              double bound = std::numeric_limits<double>::infinity();
+              if (box_edges(cell))
                 {
-                  a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
-                  row += std::abs(a(i, j));
+                  scaled_matrix(cell);
+                  bound = Operators::gershgorin_bound(a);
                 }
-              gershgorin = std::max(gershgorin, row);
+              new_shapes.push_back({std::move(key), cell, bound});
             }
-          a.set_property(LAPACKSupport::symmetric);
-          Vector<double>     eigenvalues;
-          FullMatrix<double> eigenvectors;
-          if (gershgorin > omega2_max)
-            a.compute_eigenvalues_symmetric(
-              omega2_max, 1.01 * gershgorin, 0, eigenvalues, eigenvectors);
-          for (const double lambda : eigenvalues)
-            omega2_max = std::max(omega2_max, lambda);
+        }
+    std::stable_sort(new_shapes.begin(),
+                     new_shapes.end(),
+                     [](const NewShape &x, const NewShape &y) {
+                       return x.bound > y.bound;
+                     });
+    for (const NewShape &shape : new_shapes)
+      if (shape.bound <= omega2_max)
+        seen.emplace(shape.key, shape.bound);
+      else
+        {
+          scaled_matrix(shape.cell);
+          omega2_max = Operators::largest_eigenvalue_above(a, omega2_max);
           // The shape's largest eigenvalue is at most this.
-          seen.emplace(key, omega2_max);
+          seen.emplace(shape.key, omega2_max);
         }
     omega2_max = dealii::Utilities::MPI::max(omega2_max, communicator);
     return std::sqrt(omega2_max);
