@@ -31,6 +31,21 @@ namespace tests
   }
 
   /**
+   * Run rupture quietly on the processes of @p communicator only (e.g.
+   * the first process alone, to write a checkpoint that the others then
+   * continue with it).
+   */
+  inline int
+  run_on(const MPI_Comm communicator, const std::vector<std::string> &arguments)
+  {
+    std::ostringstream sink;
+    std::streambuf    *old  = std::cout.rdbuf(sink.rdbuf());
+    const int          code = rupture::run_program(arguments, communicator);
+    std::cout.rdbuf(old);
+    return code;
+  }
+
+  /**
    * Run rupture with @p arguments, swallowing the screen output and
    * returning what it wrote to std::cerr in @p errors.
    */
