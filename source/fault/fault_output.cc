@@ -2,6 +2,7 @@
 #include <rupture/base/utilities.h>
 #include <rupture/fault/face_nodes.h>
 #include <rupture/fault/fault_output.h>
+#include <rupture/output/series_header.h>
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
@@ -522,8 +523,11 @@ namespace rupture
               out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
                   << "\n";
             }
+          std::vector<double> times;
+          for (const auto &row : s.rows)
+            times.push_back(row[0]);
           out << "# code = rupture\n# code_version = 0.1\n"
-              << "# time_step = " << time_step << "\n"
+              << Output::time_step_lines(times, time_step)
               << "# num_time_steps = " << s.rows.size() << "\n"
               << "# location = " << strike_component(r) / 1e3
               << " km along strike, " << down_dip_distance(s.location) / 1e3

@@ -1,6 +1,7 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/utilities.h>
 #include <rupture/output/receivers.h>
+#include <rupture/output/series_header.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -150,10 +151,14 @@ namespace rupture
       const char *axis[3] = {"x", "y", "z"};
       for (const auto &r : receivers)
         {
-          std::ostringstream out;
+          std::ostringstream  out;
+          std::vector<double> times;
+          for (const auto &row : r.rows)
+            times.push_back(row[0]);
           out << "# problem = rupture receiver (off-fault station) output\n"
               << "# author = rupture\n# code = rupture\n"
-              << "# code_version = 0.1\n# time_step = " << time_step << "\n"
+              << "# code_version = 0.1\n"
+              << time_step_lines(times, time_step)
               << "# num_time_steps = " << r.rows.size() << "\n"
               << "# location = " << r.location
               << " (m, global coordinates)\n# Column #1 = Time (s)\n";
