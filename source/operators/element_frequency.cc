@@ -1,17 +1,62 @@
 #include <rupture/operators/element_frequency.h>
+#include <rupture/operators/local_elasticity.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/lapack_support.h>
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <set>
 
 namespace rupture
 {
   namespace Operators
   {
+    namespace
+    {
+      /**
+       * What makes two cells have the same element matrices: material, FE
+       * (side of the fault) and the vertex offsets from vertex 0, rounded to
+       * multiples of @p unit. Cells that are translates of each other share a
+       * key.
+       */
+      template <typename CellIterator>
+      std::vector<std::int64_t>
+      cell_shape_key(const CellIterator &cell, const double unit)
+      {
+        std::vector<std::int64_t> key = {
+          static_cast<std::int64_t>(cell->material_id()),
+          static_cast<std::int64_t>(cell->active_fe_index())};
+        for (const unsigned int v : cell->vertex_indices())
+          for (unsigned int d = 0; d < CellIterator::AccessorType::dimension;
+               ++d)
+            key.push_back(
+              std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
+        return key;
+      }
+
+      /// The edge lengths of @p cell if it is an axis-aligned box.
+      template <typename CellIterator>
+      auto
+      cell_box_edges(const CellIterator &cell)
+      {
+        constexpr int dim = CellIterator::AccessorType::dimension;
+        std::array<Point<dim>, (1u << dim)> vertices;
+        for (const unsigned int v : cell->vertex_indices())
+          vertices[v] = cell->vertex(v);
+        return Operators::box_edges<dim>(vertices);
+      }
+    } // namespace
+
+
+
     template <int dim>
     BoxElementFrequency<dim>::BoxElementFrequency(const unsigned int degree)
     {
@@ -148,8 +193,125 @@ namespace rupture
 
 
 
+    template <int dim>
+    double
+    ElementFrequencies<dim>::highest(
+      const DoFHandler<dim>            &dof_handler,
+      const Material::ElasticMaterials &materials,
+      const unsigned int                fe_degree,
+      const MPI_Comm                    communicator)
+    {
+      const hp::FECollection<dim> &fe_collection =
+        dof_handler.get_fe_collection();
+      const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
+      const hp::QCollection<dim> q_lumped(QGaussLobatto<dim>(fe_degree + 1));
+      hp::FEValues<dim>          hp_values(fe_collection,
+                                  q_cells,
+                                  update_values | update_gradients |
+                                    update_JxW_values);
+      hp::FEValues<dim>          hp_lumped(fe_collection,
+                                  q_lumped,
+                                  update_values | update_JxW_values);
+      // Axis-aligned boxes are assembled from the unit cell's matrices.
+      const BoxElementFrequency<dim> boxes(fe_degree);
+      FullMatrix<double>             k;
+      LAPACKFullMatrix<double>       a;
+      double                         omega2_max = 0;
+      // A cell that is a translate of one already seen (same material, same
+      // side, same vertex offsets) has the same eigenvalues: structured
+      // meshes have few distinct cells, and a dense eigenvalue problem per
+      // cell took minutes on the full Northeast-Japan mesh. The offsets are
+      // compared to 1e-7 of the smallest cell (a relative change of the
+      // eigenvalue of that order).
+      // The shapes are remembered from one call to the next (a changed mesh
+      // keeps most of its cells); the unit of the first mesh stays. A
+      // shape's value is an upper bound of its largest eigenvalue, so a
+      // later mesh's step is safe, if perhaps smaller than its own cells
+      // need.
+      auto &seen = omega2;
+      if (unit == 0)
+        unit = 1e-7 * GridTools::minimal_cell_diameter(
+                        dof_handler.get_triangulation());
+
+      // The matrix M^-1/2 K M^-1/2 of one cell.
+      const auto scaled_matrix = [&](const auto &cell) {
+        const auto &m = materials.get(cell->material_id());
+        if (const auto h = cell_box_edges(cell))
+          return boxes.scaled_matrix(*h, m, a);
+        const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
+        hp_values.reinit(cell);
+        hp_lumped.reinit(cell);
+        const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
+        const FEValues<dim> &lv        = hp_lumped.get_present_fe_values();
+        const unsigned int   n         = fe_values.dofs_per_cell;
+        k.reinit(n, n);
+        local_elasticity_matrices(fe_values, u, m, k, nullptr);
+        std::vector<double> mass(n, 0.);
+        for (const unsigned int q : lv.quadrature_point_indices())
+          for (unsigned int i = 0; i < n; ++i)
+            mass[i] += m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
+        a.reinit(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
+      };
+
+      // The shapes not seen before, each with an upper bound of its largest
+      // eigenvalue that is cheap for boxes (Gershgorin's, of the matrix
+      // assembled without quadrature; infinite for other cells). Taken from
+      // the largest bound down, the first few shapes fix the maximum and
+      // the others are passed over by their bound, without an eigenvalue
+      // problem: on a graded mesh most shapes are larger than the smallest.
+      struct NewShape
+      {
+        std::vector<std::int64_t>                      key;
+        typename DoFHandler<dim>::active_cell_iterator cell;
+        double                                         bound;
+      };
+      std::vector<NewShape>               new_shapes;
+      std::set<std::vector<std::int64_t>> queued;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            auto key = cell_shape_key(cell, unit);
+            if (const auto known = seen.find(key); known != seen.end())
+              omega2_max = std::max(omega2_max, known->second);
+            else if (queued.insert(key).second)
+              {
+                double bound = std::numeric_limits<double>::infinity();
+                if (cell_box_edges(cell))
+                  {
+                    scaled_matrix(cell);
+                    bound = gershgorin_bound(a);
+                  }
+                new_shapes.push_back({std::move(key), cell, bound});
+              }
+          }
+      std::stable_sort(new_shapes.begin(),
+                       new_shapes.end(),
+                       [](const NewShape &x, const NewShape &y) {
+                         return x.bound > y.bound;
+                       });
+      for (const NewShape &shape : new_shapes)
+        if (shape.bound <= omega2_max)
+          seen.emplace(shape.key, shape.bound);
+        else
+          {
+            scaled_matrix(shape.cell);
+            omega2_max = largest_eigenvalue_above(a, omega2_max);
+            // The shape's largest eigenvalue is at most this.
+            seen.emplace(shape.key, omega2_max);
+          }
+      omega2_max = dealii::Utilities::MPI::max(omega2_max, communicator);
+      return std::sqrt(omega2_max);
+    }
+
+
+
     template class BoxElementFrequency<2>;
     template class BoxElementFrequency<3>;
+    template class ElementFrequencies<2>;
+    template class ElementFrequencies<3>;
     template std::optional<Tensor<1, 2>>
     box_edges<2>(const std::array<Point<2>, 4> &);
     template std::optional<Tensor<1, 3>>

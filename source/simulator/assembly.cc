@@ -1,4 +1,4 @@
-#include <rupture/operators/element_frequency.h>
+#include <rupture/operators/local_elasticity.h>
 #include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
@@ -23,84 +23,6 @@
 
 namespace rupture
 {
-  namespace
-  {
-    /**
-     * The element stiffness and (consistent) mass matrix of linear
-     * isotropic elasticity on the cell that @p fe_values was reinit'ed on.
-     * @p u extracts the side of the displacement that lives on this cell.
-     */
-    template <int dim>
-    void
-    local_elasticity_matrices(const FEValues<dim>              &fe_values,
-                              const FEValuesExtractors::Vector &u,
-                              const Material::ElasticConstants &m,
-                              FullMatrix<double>               &k,
-                              FullMatrix<double>               *mass)
-    {
-      const unsigned int n = fe_values.dofs_per_cell;
-      k                    = 0;
-      if (mass)
-        *mass = 0;
-      std::vector<SymmetricTensor<2, dim>> eps(n);
-      std::vector<double>                  div(n);
-      std::vector<Tensor<1, dim>>          phi(n);
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        {
-          const double JxW = fe_values.JxW(q);
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              eps[i] = fe_values[u].symmetric_gradient(i, q);
-              div[i] = fe_values[u].divergence(i, q);
-              phi[i] = fe_values[u].value(i, q);
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                k(i, j) +=
-                  (m.lambda * div[i] * div[j] + 2 * m.mu * (eps[i] * eps[j])) *
-                  JxW;
-                if (mass)
-                  (*mass)(i, j) += m.density * (phi[i] * phi[j]) * JxW;
-              }
-        }
-    }
-
-    /**
-     * What makes two cells have the same element matrices: material, FE
-     * (side of the fault) and the vertex offsets from vertex 0, rounded to
-     * multiples of @p unit. Cells that are translates of each other share a
-     * key.
-     */
-    template <typename CellIterator>
-    std::vector<std::int64_t>
-    cell_shape_key(const CellIterator &cell, const double unit)
-    {
-      std::vector<std::int64_t> key = {
-        static_cast<std::int64_t>(cell->material_id()),
-        static_cast<std::int64_t>(cell->active_fe_index())};
-      for (const unsigned int v : cell->vertex_indices())
-        for (unsigned int d = 0; d < CellIterator::AccessorType::dimension; ++d)
-          key.push_back(
-            std::llround((cell->vertex(v)[d] - cell->vertex(0)[d]) / unit));
-      return key;
-    }
-
-    /// The edge lengths of @p cell if it is an axis-aligned box.
-    template <typename CellIterator>
-    auto
-    box_edges(const CellIterator &cell)
-    {
-      constexpr int dim = CellIterator::AccessorType::dimension;
-      std::array<Point<dim>, (1u << dim)> vertices;
-      for (const unsigned int v : cell->vertex_indices())
-        vertices[v] = cell->vertex(v);
-      return Operators::box_edges<dim>(vertices);
-    }
-  } // namespace
-
-
-
   template <int dim>
   void
   Simulator<dim>::assemble_physics_matrices(const bool prepare_first_phase)
@@ -182,7 +104,7 @@ namespace rupture
               fe.system_to_component_index(i).first - u.first_vector_component;
 
           if (need_matrices)
-            local_elasticity_matrices(
+            Operators::local_elasticity_matrices(
               fe_values, u, m, k, need_mass ? &mass : nullptr);
           if (!stiffness_matrix_free)
             hanging_constraints.distribute_local_to_global(k,
@@ -361,7 +283,10 @@ namespace rupture
     state.time_step = requested_time_step;
     if (scheme == Scheme::explicit_central_difference)
       {
-        const double omega = compute_highest_frequency();
+        const double omega = element_frequencies.highest(dof_handler,
+                                                         materials,
+                                                         fe_degree,
+                                                         communicator);
         stable_time_step   = TimeIntegration::central_difference_stable_step(
           omega,
           rayleigh_alpha,
@@ -567,119 +492,6 @@ namespace rupture
 
   template <int dim>
   double
-  Simulator<dim>::compute_highest_frequency() const
-  {
-    // Irons' bound: the highest frequency of the assembled system is below
-    // the highest of the elements, each with its lumped mass. So the step
-    // computed from it is safe on any mesh.
-    const hp::QCollection<dim> q_cells(QGauss<dim>(fe_degree + 1));
-    const hp::QCollection<dim> q_lumped(QGaussLobatto<dim>(fe_degree + 1));
-    hp::FEValues<dim>          hp_values(fe_collection,
-                                q_cells,
-                                update_values | update_gradients |
-                                  update_JxW_values);
-    hp::FEValues<dim>          hp_lumped(fe_collection,
-                                q_lumped,
-                                update_values | update_JxW_values);
-    // Axis-aligned boxes are assembled from the unit cell's matrices.
-    const Operators::BoxElementFrequency<dim> boxes(fe_degree);
-    FullMatrix<double>                        k;
-    LAPACKFullMatrix<double>                  a;
-    double                                    omega2_max = 0;
-    // A cell that is a translate of one already seen (same material, same
-    // side, same vertex offsets) has the same eigenvalues: structured
-    // meshes have few distinct cells, and a dense eigenvalue problem per
-    // cell took minutes on the full Northeast-Japan mesh. The offsets are
-    // compared to 1e-7 of the smallest cell (a relative change of the
-    // eigenvalue of that order).
-    // The shapes are remembered from one call to the next (a changed mesh
-    // keeps most of its cells); the unit of the first mesh stays. A
-    // shape's value is an upper bound of its largest eigenvalue, so a
-    // later mesh's step is safe, if perhaps smaller than its own cells
-    // need.
-    auto &seen = element_frequencies.omega2;
-    if (element_frequencies.unit == 0)
-      element_frequencies.unit =
-        1e-7 * GridTools::minimal_cell_diameter(triangulation);
-    const double unit = element_frequencies.unit;
-
-    // The matrix M^-1/2 K M^-1/2 of one cell.
-    const auto scaled_matrix = [&](const auto &cell) {
-      const auto &m = materials.get(cell->material_id());
-      if (const auto h = box_edges(cell))
-        return boxes.scaled_matrix(*h, m, a);
-      const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
-      hp_values.reinit(cell);
-      hp_lumped.reinit(cell);
-      const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
-      const FEValues<dim> &lv        = hp_lumped.get_present_fe_values();
-      const unsigned int   n         = fe_values.dofs_per_cell;
-      k.reinit(n, n);
-      local_elasticity_matrices(fe_values, u, m, k, nullptr);
-      std::vector<double> mass(n, 0.);
-      for (const unsigned int q : lv.quadrature_point_indices())
-        for (unsigned int i = 0; i < n; ++i)
-          mass[i] += m.density * lv[u].value(i, q).norm_square() * lv.JxW(q);
-      a.reinit(n, n);
-      for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < n; ++j)
-          a(i, j) = k(i, j) / std::sqrt(mass[i] * mass[j]);
-    };
-
-    // The shapes not seen before, each with an upper bound of its largest
-    // eigenvalue that is cheap for boxes (Gershgorin's, of the matrix
-    // assembled without quadrature; infinite for other cells). Taken from
-    // the largest bound down, the first few shapes fix the maximum and
-    // the others are passed over by their bound, without an eigenvalue
-    // problem: on a graded mesh most shapes are larger than the smallest.
-    struct NewShape
-    {
-      std::vector<std::int64_t>                      key;
-      typename DoFHandler<dim>::active_cell_iterator cell;
-      double                                         bound;
-    };
-    std::vector<NewShape>               new_shapes;
-    std::set<std::vector<std::int64_t>> queued;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          auto key = cell_shape_key(cell, unit);
-          if (const auto known = seen.find(key); known != seen.end())
-            omega2_max = std::max(omega2_max, known->second);
-          else if (queued.insert(key).second)
-            {
-              double bound = std::numeric_limits<double>::infinity();
-              if (box_edges(cell))
-                {
-                  scaled_matrix(cell);
-                  bound = Operators::gershgorin_bound(a);
-                }
-              new_shapes.push_back({std::move(key), cell, bound});
-            }
-        }
-    std::stable_sort(new_shapes.begin(),
-                     new_shapes.end(),
-                     [](const NewShape &x, const NewShape &y) {
-                       return x.bound > y.bound;
-                     });
-    for (const NewShape &shape : new_shapes)
-      if (shape.bound <= omega2_max)
-        seen.emplace(shape.key, shape.bound);
-      else
-        {
-          scaled_matrix(shape.cell);
-          omega2_max = Operators::largest_eigenvalue_above(a, omega2_max);
-          // The shape's largest eigenvalue is at most this.
-          seen.emplace(shape.key, omega2_max);
-        }
-    omega2_max = dealii::Utilities::MPI::max(omega2_max, communicator);
-    return std::sqrt(omega2_max);
-  }
-
-
-
-  template <int dim>
-  double
   Simulator<dim>::compute_l2_error(const double time) const
   {
     const VectorType &u_ghost = ghosted_copy(0, state.displacement);
@@ -743,11 +555,12 @@ namespace rupture
           mass.reinit(with_mass ? n : 0, with_mass ? n : 0);
           dofs.resize(n);
           cell->get_dof_indices(dofs);
-          local_elasticity_matrices<dim>(fe_values,
-                                         u,
-                                         materials.get(cell->material_id()),
-                                         k,
-                                         with_mass ? &mass : nullptr);
+          Operators::local_elasticity_matrices<dim>(
+            fe_values,
+            u,
+            materials.get(cell->material_id()),
+            k,
+            with_mass ? &mass : nullptr);
           action(cell, dofs, k, mass);
         }
   }

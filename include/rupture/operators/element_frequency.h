@@ -3,13 +3,18 @@
 
 #include <rupture/material/elastic_material.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <array>
+#include <cstdint>
+#include <map>
 #include <optional>
+#include <vector>
 
 namespace rupture
 {
@@ -55,6 +60,38 @@ namespace rupture
       /// S^bd scaled by the lumped masses (see the class description).
       std::array<std::array<FullMatrix<double>, dim>, dim> s;
     };
+
+    /**
+     * The explicit scheme's highest frequency by Irons' bound: the
+     * highest frequency of the assembled system (lumped mass) is below the
+     * highest of its elements, so the step computed from it is safe on any
+     * mesh. One element eigenvalue problem per distinct cell shape, and
+     * the shapes are remembered from one mesh to the next.
+     */
+    template <int dim>
+    class ElementFrequencies
+    {
+    public:
+      /**
+       * The highest element frequency (rad/s) over the locally owned cells
+       * of @p dof_handler on all processes of @p communicator, for
+       * elements FE_Q(@p degree)^dim (one field per side of a fault) of
+       * the cells' @p materials.
+       */
+      double
+      highest(const DoFHandler<dim>            &dof_handler,
+              const Material::ElasticMaterials &materials,
+              const unsigned int                degree,
+              const MPI_Comm                    communicator);
+
+    private:
+      /// The length unit of the shape keys (fixed by the first mesh).
+      double unit = 0;
+      /// An upper bound of the largest squared frequency of each shape.
+      std::map<std::vector<std::int64_t>, double> omega2;
+    };
+
+
 
     /**
      * Gershgorin's bound of the largest eigenvalue of the symmetric

@@ -8,6 +8,7 @@
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
 #include <rupture/operators/elastic_operator.h>
+#include <rupture/operators/element_frequency.h>
 #include <rupture/operators/fault_zone_damping.h>
 #include <rupture/operators/multigrid.h>
 #include <rupture/output/directory.h>
@@ -373,16 +374,9 @@ namespace rupture
                   const double      mass_factor) const;
     void
     assemble_load_vector(const double time, VectorType &load) const;
-    double
-    compute_highest_frequency() const;
-    /// What compute_highest_frequency() found for each cell shape (its
-    /// key's unit, and the squared frequency by shape).
-    struct ElementFrequencies
-    {
-      double                                      unit = 0;
-      std::map<std::vector<std::int64_t>, double> omega2;
-    };
-    mutable ElementFrequencies element_frequencies;
+    /// The explicit scheme's highest element frequency, remembered by
+    /// cell shape across meshes.
+    Operators::ElementFrequencies<dim> element_frequencies;
     double
     compute_l2_error(const double time) const;
 
