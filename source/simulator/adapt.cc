@@ -41,6 +41,50 @@ namespace rupture
 
 
   template <int dim>
+  std::pair<unsigned int, unsigned int>
+  Simulator<dim>::fault_levels() const
+  {
+    if (fault_levels_now)
+      return *fault_levels_now;
+    unsigned int finest_now = 0, finest_then = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() && fault->side(cell) == 0)
+        for (const auto f : cell->face_indices())
+          if (!cell->at_boundary(f) &&
+              fault->side(cell->neighbor(f)) != fault->side(cell))
+            {
+              finest_now  = std::max<unsigned int>(finest_now, cell->level());
+              finest_then = std::max(finest_then,
+                                     base_level(cell) + mesh_refinement.levels);
+            }
+    finest_now       = dealii::Utilities::MPI::max(finest_now, communicator);
+    finest_then      = dealii::Utilities::MPI::max(finest_then, communicator);
+    fault_levels_now = std::make_pair(finest_now, finest_then);
+    return *fault_levels_now;
+  }
+
+
+
+  template <int dim>
+  bool
+  Simulator<dim>::front_outside_fine_cells() const
+  {
+    const auto [finest_now, finest_then] = fault_levels();
+    if (finest_now >= finest_then)
+      return false;
+    const bool active =
+      !fault
+         ->active_locations(mesh_refinement.slip_rate_threshold,
+                            state.clock.phase_time,
+                            mesh_refinement.coarsening_delay,
+                            false)
+         .empty();
+    return dealii::Utilities::MPI::max(active ? 1 : 0, communicator) == 1;
+  }
+
+
+
+  template <int dim>
   bool
   Simulator<dim>::adapt_mesh(const double       duration,
                              const double       requested_time_step,
@@ -58,19 +102,7 @@ namespace rupture
     double p_wave_speed = 0;
     for (unsigned int m = 0; m < materials.n_materials(); ++m)
       p_wave_speed = std::max(p_wave_speed, materials.get(m).p_wave_speed());
-    unsigned int finest_now = 0, finest_then = 0;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->is_locally_owned() && fault->side(cell) == 0)
-        for (const auto f : cell->face_indices())
-          if (!cell->at_boundary(f) &&
-              fault->side(cell->neighbor(f)) != fault->side(cell))
-            {
-              finest_now  = std::max<unsigned int>(finest_now, cell->level());
-              finest_then = std::max(finest_then,
-                                     base_level(cell) + mesh_refinement.levels);
-            }
-    finest_now  = dealii::Utilities::MPI::max(finest_now, communicator);
-    finest_then = dealii::Utilities::MPI::max(finest_then, communicator);
+    const auto [finest_now, finest_then] = fault_levels();
     const double coming_step =
       (current_scheme() ==
          TimeIntegration::Scheme::explicit_central_difference &&

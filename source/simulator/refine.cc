@@ -18,6 +18,7 @@ namespace rupture
   unsigned int
   Simulator<dim>::execute_refinement()
   {
+    fault_levels_now.reset();
     // The motion and the fault's state, with ghost entries, attached to
     // the mesh. (The forces of the energy sums belong to their mesh: the
     // callers compute them anew, refresh_step_forces().)

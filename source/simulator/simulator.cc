@@ -628,10 +628,12 @@ namespace rupture
           }
         write_step_output(i == n_steps || stop || ends_early);
         // The mesh follows the rupture, from the first step of a phase on
-        // (where a nucleation patch starts to slip); the checkpoint of the
-        // step holds the new mesh.
+        // (where a nucleation patch starts to slip), and at the step at
+        // which the first fault node becomes active if no fault cell is
+        // fine yet; the checkpoint of the step holds the new mesh.
         if (mesh_refinement.enabled() && i < n_steps && !stop && !ends_early &&
-            (i == 1 || state.step % mesh_refinement.interval == 0) &&
+            (i == 1 || state.step % mesh_refinement.interval == 0 ||
+             front_outside_fine_cells()) &&
             adapt_mesh(duration, requested_time_step(), i))
           n_steps = static_cast<unsigned int>(
             clock.steps_of_phase(duration, state.time_step));

@@ -46,6 +46,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -174,6 +175,17 @@ namespace rupture
     adapt_mesh(const double       duration,
                const double       requested_time_step,
                const unsigned int steps_done);
+    /// The finest level of the fault's cells now, and the finest they may
+    /// reach (their base level plus <Mesh refinement/Levels>), over all
+    /// processes.
+    std::pair<unsigned int, unsigned int>
+    fault_levels() const;
+    /// True when the mesh should be adapted between the regular times:
+    /// no fault cell has its finest level yet (a rupture that starts
+    /// without an overstressed patch, as rate-and-state nucleation does)
+    /// and a fault node has become active. Collective.
+    bool
+    front_outside_fine_cells() const;
     /// The time step the current phase asks for (0: the explicit
     /// scheme's Courant fraction of the stable step).
     double
@@ -673,6 +685,10 @@ namespace rupture
     unsigned int n_adaptations      = 0;
     double       dof_steps          = 0;
     double       peak_dofs          = 0;
+    /// fault_levels() of the present mesh, once computed (reset when the
+    /// mesh changes).
+    mutable std::optional<std::pair<unsigned int, unsigned int>>
+      fault_levels_now;
   };
 } // namespace rupture
 
