@@ -3,6 +3,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <cmath>
+
 namespace rupture
 {
   namespace Adaptivity
@@ -16,23 +18,55 @@ namespace rupture
         prm.declare_entry(
           "Criteria",
           "",
-          Patterns::List(Patterns::Selection("rupture front")),
+          Patterns::List(Patterns::Selection("rupture front|process zone")),
           "What the mesh follows during the run; empty: the mesh stays as "
           "set up. \"rupture front\": the cells at the fault (on both sides) "
           "are refined <Levels> more times where a fault node slips faster "
           "than <Slip rate threshold> and in a band ahead of it as wide as "
-          "a P wave travels in <Interval> steps (plus <Extra band>), so that "
-          "the refinement reaches a node before the front does; they are "
-          "coarsened again, never below the base mesh, where no node is "
-          "active within twice that band (a node is active while it slips "
-          "or for <Coarsening delay> after its rupture). The fields, the "
-          "fault's state and the outputs' series carry over; the time step "
-          "of the explicit scheme follows the stable step of the new mesh. "
-          "Multigrid preconditioners are refused on such meshes.");
+          "a P wave travels until the next adaptation (plus <Extra band>), "
+          "so that the refinement reaches a node before the front does; "
+          "they are coarsened again, never below the base mesh, where no "
+          "node is active within twice that band (a node is active while "
+          "it slips or for <Coarsening delay> after its rupture). \"process "
+          "zone\": the fault's cells are refined, at most <Levels> times, "
+          "until <Nodes per process zone> node spacings (cell size over the "
+          "polynomial degree) fit into the friction law's estimate of the "
+          "process (cohesive) zone at rest, (9 pi/32) mu d/(Delta p) with "
+          "the law's slip scale d (slip-weakening distance, state distance "
+          "L), its strength drop Delta per unit pressure (mu_s - mu_d, b) "
+          "and the fault pressure p; cells finer than needed are coarsened. "
+          "Both together: the front's band is refined only as deep as the "
+          "process zone needs. The fields, the fault's state and the "
+          "outputs' series carry over; the time step of the explicit scheme "
+          "follows the stable step of the new mesh. Multigrid "
+          "preconditioners are refused on such meshes.");
         prm.declare_entry("Interval",
                           "10",
                           Patterns::Integer(1),
-                          "Time steps between two adaptations of the mesh.");
+                          "Time steps between two adaptations of the mesh "
+                          "(unless <Time interval> is set).");
+        prm.declare_entry("Time interval",
+                          "0",
+                          Patterns::Double(0),
+                          "Time (s) between two adaptations of the mesh: "
+                          "the mesh is adapted after the step that crosses "
+                          "a multiple of it (steps of any length). 0: every "
+                          "<Interval> steps.");
+        prm.declare_entry("Nodes per process zone",
+                          "3",
+                          Patterns::Double(0.1),
+                          "Criterion \"process zone\": how many node "
+                          "spacings the process zone at rest must span. The "
+                          "zone shrinks as a front accelerates, so the "
+                          "moving front has fewer nodes in it.");
+        prm.declare_entry(
+          "Maximum degrees of freedom",
+          "0",
+          Patterns::Double(0),
+          "A budget: a level of refinement whose estimated degrees of "
+          "freedom (the present ones times the ratio of the cell counts) "
+          "would exceed it is not made, and the run says so; coarsening goes "
+          "on. 0: no limit. It must not be below the base mesh's.");
         prm.declare_entry("Levels",
                           "1",
                           Patterns::Integer(1, 8),
@@ -71,15 +105,34 @@ namespace rupture
       const std::vector<std::string> criteria =
         dealii::Utilities::split_string_list(prm.get("Criteria"));
       follow_front = false;
+      process_zone = false;
       for (const auto &c : criteria)
         if (c == "rupture front")
           follow_front = true;
+        else if (c == "process zone")
+          process_zone = true;
       interval            = prm.get_integer("Interval");
+      time_interval       = prm.get_double("Time interval");
+      nodes_per_zone      = prm.get_double("Nodes per process zone");
+      max_dofs            = prm.get_double("Maximum degrees of freedom");
       levels              = prm.get_integer("Levels");
       slip_rate_threshold = prm.get_double("Slip rate threshold");
       coarsening_delay    = prm.get_double("Coarsening delay");
       extra_band          = prm.get_double("Extra band");
       prm.leave_subsection();
+    }
+
+
+
+    bool
+    Parameters::due(const unsigned int step,
+                    const double       phase_time,
+                    const double       time_step) const
+    {
+      if (time_interval > 0)
+        return std::floor(phase_time / time_interval) >
+               std::floor((phase_time - time_step) / time_interval);
+      return step % interval == 0;
     }
   } // namespace Adaptivity
 } // namespace rupture

@@ -308,6 +308,30 @@ namespace rupture
 
 
     template <int dim>
+    std::vector<std::pair<Point<dim>, double>>
+    Fault<dim>::process_zone_widths() const
+    {
+      std::vector<std::pair<Point<dim>, double>> widths;
+      for (const auto &pair : pairs)
+        if (!pair.hanging)
+          {
+            double normal = pair.trial.traction * pair.normal;
+            if (normal == 0)
+              normal = pair.initial_traction * pair.normal;
+            const double width =
+              friction_law->process_zone_width(to_3d(pair.location),
+                                               pair.state,
+                                               std::max(-normal, 0.),
+                                               pair.shear_modulus);
+            if (std::isfinite(width))
+              widths.emplace_back(pair.location, width);
+          }
+      return widths;
+    }
+
+
+
+    template <int dim>
     Statistics
     Fault<dim>::statistics() const
     {

@@ -42,6 +42,17 @@ namespace rupture
 
 
 
+    double
+    Interface::process_zone_width(const Point<3> &,
+                                  const State &,
+                                  const double,
+                                  const double) const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+
+
     void
     Interface::update_state(const Point<3> &,
                             const State &old,

@@ -1,4 +1,5 @@
 #include <rupture/base/utilities.h>
+#include <rupture/friction/law_utilities.h>
 #include <rupture/friction/linear_slip_weakening.h>
 
 #include <algorithm>
@@ -188,6 +189,23 @@ namespace rupture
     {
       const auto p = point_parameters(x, state);
       return p[0] > p[1] && state.slip_path < p[2];
+    }
+
+
+
+    double
+    LinearSlipWeakening::process_zone_width(const Point<3> &x,
+                                            const State    &state,
+                                            const double    pressure,
+                                            const double    shear_modulus) const
+    {
+      const auto [mu0, mud, ld, c, f] = point_parameters(x, state);
+      (void)c;
+      (void)f;
+      return LawUtilities::process_zone_at_rest(shear_modulus,
+                                                ld,
+                                                mu0 - mud,
+                                                pressure);
     }
 
 

@@ -317,6 +317,21 @@ namespace rupture
 
 
     double
+    RateAndState::process_zone_width(const Point<3> &x,
+                                     const State    &state,
+                                     const double    pressure,
+                                     const double    shear_modulus) const
+    {
+      const Constants c = LawUtilities::constants(functions, x, state);
+      return LawUtilities::process_zone_at_rest(shear_modulus,
+                                                c[2],
+                                                c[1],
+                                                pressure);
+    }
+
+
+
+    double
     RateAndState::cohesion(const Point<3> &, const State &) const
     {
       return 0;

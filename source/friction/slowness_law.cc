@@ -244,6 +244,21 @@ namespace rupture
 
 
     double
+    SlownessLaw::process_zone_width(const Point<3> &x,
+                                    const State    &state,
+                                    const double    pressure,
+                                    const double    shear_modulus) const
+    {
+      const Constants c = LawUtilities::constants(functions, x, state);
+      return LawUtilities::process_zone_at_rest(shear_modulus,
+                                                c[3],
+                                                c[2],
+                                                pressure);
+    }
+
+
+
+    double
     SlownessLaw::cohesion(const Point<3> &, const State &) const
     {
       return 0;

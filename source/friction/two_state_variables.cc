@@ -262,6 +262,22 @@ namespace rupture
 
 
     double
+    TwoStateVariables::process_zone_width(const Point<3> &x,
+                                          const State    &state,
+                                          const double    pressure,
+                                          const double    shear_modulus) const
+    {
+      // The shorter of the two states' zones.
+      const Constants c = LawUtilities::constants(functions, x, state);
+      return std::min(
+        LawUtilities::process_zone_at_rest(shear_modulus, c[4], c[2], pressure),
+        LawUtilities::process_zone_at_rest(
+          shear_modulus, c[5], c[3], pressure));
+    }
+
+
+
+    double
     TwoStateVariables::cohesion(const Point<3> &, const State &) const
     {
       return 0;

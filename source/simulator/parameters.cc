@@ -607,9 +607,20 @@ namespace rupture
                                std::to_string(time_parameters.time_step) +
                                " s."));
         AssertThrow(fault != nullptr,
-                    ExcMessage("<Mesh refinement/Criteria> = rupture front "
-                               "follows a fault, but <Fault/Model> = none. "
-                               "Allowed: a fault model, or no criterion."));
+                    ExcMessage("<Mesh refinement/Criteria> (rupture front, "
+                               "process zone) follows a fault, but <Fault/"
+                               "Model> = none. Allowed: a fault model, or no "
+                               "criterion."));
+        AssertThrow(!mesh_refinement.process_zone ||
+                      fault->friction().has_process_zone_width(),
+                    ExcMessage("<Mesh refinement/Criteria> = process zone "
+                               "needs the friction law's estimate of its "
+                               "process zone, which <Fault/Friction law> = " +
+                               prm.get({"Fault"}, "Friction law") +
+                               " does not give (it has no slip distance over "
+                               "which it weakens). Allowed: linear slip "
+                               "weakening and the rate-and-state laws, or "
+                               "the criterion rupture front alone."));
       }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();

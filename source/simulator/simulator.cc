@@ -75,6 +75,16 @@ namespace rupture
     record_memory("mesh");
     setup_dofs();
     record_memory("DoFs and fault");
+    AssertThrow(mesh_refinement.max_dofs == 0 ||
+                  mesh_refinement.max_dofs >= dof_handler.n_dofs(),
+                ExcMessage("<Mesh refinement/Maximum degrees of freedom> = " +
+                           std::to_string(static_cast<long long>(
+                             mesh_refinement.max_dofs)) +
+                           " is below the " +
+                           std::to_string(dof_handler.n_dofs()) +
+                           " degrees of freedom of the base mesh, which the "
+                           "adaptation never coarsens. Allowed: 0 (no limit) "
+                           "or at least the base mesh's."));
     assemble_physics_matrices();
     record_memory("operators");
     // A body force or initial conditions that are not finite at t = 0 are
@@ -632,7 +642,10 @@ namespace rupture
         // which the first fault node becomes active if no fault cell is
         // fine yet; the checkpoint of the step holds the new mesh.
         if (mesh_refinement.enabled() && i < n_steps && !stop && !ends_early &&
-            (i == 1 || state.step % mesh_refinement.interval == 0 ||
+            (i == 1 ||
+             mesh_refinement.due(state.step,
+                                 state.clock.phase_time,
+                                 state.time_step) ||
              front_outside_fine_cells()) &&
             adapt_mesh(duration, requested_time_step(), i))
           n_steps = static_cast<unsigned int>(

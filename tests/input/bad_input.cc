@@ -272,6 +272,30 @@ main(int argc, char **argv)
          "Time integration/Scheme=explicit central difference"});
   check("mesh refinement without a fault",
         {"valid.prm", "--set", "Mesh refinement/Criteria=rupture front"});
+  check("mesh refinement to the process zone of a law without one",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=process zone",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 250",
+         "--set",
+         "Fault/Plane normal=0, 1",
+         "--set",
+         "Fault/Friction law=cochard madariaga"});
+  check("a DoF budget below the base mesh",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=rupture front",
+         "--set",
+         "Mesh refinement/Maximum degrees of freedom=10",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 500",
+         "--set",
+         "Fault/Plane normal=0, 1"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

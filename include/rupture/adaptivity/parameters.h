@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <string>
 
 namespace rupture
@@ -22,8 +23,18 @@ namespace rupture
       /// where it slips and in a band ahead of the front, coarsen them
       /// once it has healed.
       bool follow_front = false;
+      /// <Criteria> contains "process zone": the fault's cells are refined
+      /// until <Nodes per process zone> node spacings fit into the friction
+      /// law's process zone (with "rupture front": that deep only).
+      bool process_zone = false;
       /// Steps between two adaptations of the mesh.
       unsigned int interval = 10;
+      /// Time between two adaptations (s); 0: <Interval> steps.
+      double time_interval = 0;
+      /// Node spacings per process-zone width.
+      double nodes_per_zone = 3;
+      /// No refinement that would take the DoFs above it; 0: no limit.
+      double max_dofs = 0;
       /// Levels above the base mesh (global refinements and the static
       /// refinement region) that the front's cells get.
       unsigned int levels = 1;
@@ -43,7 +54,25 @@ namespace rupture
       bool
       enabled() const
       {
-        return follow_front;
+        return follow_front || process_zone;
+      }
+
+      /// Whether the mesh is adapted after step @p step of a phase (its
+      /// number in the run), which ended at @p phase_time (s) after a step
+      /// of @p time_step: every <Interval> steps, or with <Time interval>
+      /// when the step crossed a multiple of it.
+      bool
+      due(const unsigned int step,
+          const double       phase_time,
+          const double       time_step) const;
+
+      /// The time until the next adaptation, for the band ahead of the
+      /// front: <Time interval>, or <Interval> steps of @p time_step.
+      double
+      time_to_next(const double time_step) const
+      {
+        return time_interval > 0 ? std::max(time_interval, time_step) :
+                                   interval * time_step;
       }
     };
   } // namespace Adaptivity

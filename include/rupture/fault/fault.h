@@ -441,6 +441,17 @@ namespace rupture
                        const double memory,
                        const bool   overstressed = false) const;
 
+      /**
+       * The locally owned, not hanging pairs' locations and their friction
+       * law's process-zone width (Friction::Interface::process_zone_width())
+       * with the pair's shear modulus and its compressive normal traction
+       * of the last assemble() (the initial traction before the first):
+       * where a mesh refines to resolve the zone. Pairs of an infinite
+       * width (nothing weakens there, or no pressure) are left out.
+       */
+      std::vector<std::pair<Point<dim>, double>>
+      process_zone_widths() const;
+
       unsigned int
       n_split_nodes() const;
 

@@ -246,6 +246,34 @@ namespace rupture
       }
 
       /**
+       * The width (m) of the process zone (the cohesive zone behind a
+       * rupture front, where the strength falls from its peak to its
+       * residual value) at @p x, for a front that has not yet accelerated,
+       * on a fault pressed by @p pressure (>= 0, Pa) in a medium of shear
+       * modulus @p shear_modulus (Pa): (9 pi / 32) mu d / Delta, with the
+       * law's slip scale d (slip-weakening distance, state evolution
+       * distance) and its strength drop over it per unit pressure Delta
+       * (mu_s - mu_d, the state coefficient b). A moving front shrinks it.
+       * Infinite where the law does not weaken (or there is no pressure);
+       * NaN for laws that give no estimate (has_process_zone_width()).
+       */
+      virtual double
+      process_zone_width(const Point<3> &x,
+                         const State    &state,
+                         const double    pressure,
+                         const double    shear_modulus) const;
+
+      /**
+       * Whether process_zone_width() gives an estimate: a mesh that
+       * refines to the process zone needs it.
+       */
+      virtual bool
+      has_process_zone_width() const
+      {
+        return false;
+      }
+
+      /**
        * Whether the friction at @p x can still weaken from @p state (a
        * bonded zone): slipping there ends a loading phase.
        */

@@ -58,6 +58,19 @@ namespace rupture
       }
 
       /**
+       * The process-zone width of a front at rest (Palmer and Rice's
+       * estimate as Day et al. (2005) use it): (9 pi / 32) @p shear_modulus
+       * @p slip_scale / (@p drop @p pressure), with @p drop the strength
+       * drop per unit pressure over @p slip_scale; infinite where nothing
+       * weakens (drop or pressure <= 0).
+       */
+      double
+      process_zone_at_rest(const double shear_modulus,
+                           const double slip_scale,
+                           const double drop,
+                           const double pressure);
+
+      /**
        * The slip rate of a step: the slip increment over dt (0 for
        * dt <= 0).
        */

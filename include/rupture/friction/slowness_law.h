@@ -71,6 +71,18 @@ namespace rupture
       double
       cohesion(const Point<3> &x, const State &state) const override;
 
+      double
+      process_zone_width(const Point<3> &x,
+                         const State    &state,
+                         const double    pressure,
+                         const double    shear_modulus) const override;
+
+      bool
+      has_process_zone_width() const override
+      {
+        return true;
+      }
+
       bool
       depends_on_slip_rate() const override
       {
