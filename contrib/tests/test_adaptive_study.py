@@ -21,6 +21,22 @@ def test_runs_share_the_finest_size(script):
                for s in band)
 
 
+def test_3d_cases_widen_the_core_and_run_on_two_ranks(script):
+    study = script("adaptive-study")
+    assert study.dimension("tpv101") == 3 and study.dimension("tpv3") == 3
+    assert study.dimension("tpv101-2d") == 2
+    runs = dict(study.cases_of(750.0, "tpv101"))
+    assert "Scene/Box/Number of cells=48,8,28" in runs["h"]
+    assert "Scene/Box/Number of cells=24,4,14" in runs["2h"]
+    assert "Scene/Box/Number of cells=12,2,7" in runs["adaptive"]
+    assert all("Scene/Box/Grading/Core lower corner=-18000, -3000, -10500"
+               in sets for sets in runs.values())
+    assert "Mesh refinement/Interval=40" in runs["adaptive"]
+    assert any(s.startswith("Discretization/Refinement region=abs(y) < "
+                            "1875 && abs(x) < 18000 && abs(z) < 10500")
+               for s in runs["band"])
+
+
 def _run(directory, dofs_column, summary_dofs):
     directory.mkdir()
     names = ["Time step number", "Time (s)"]

@@ -1,5 +1,6 @@
 // The run-time parameters of the simulator: their declaration and parsing.
 
+#include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/adaptivity/parameters.h>
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
@@ -621,6 +622,14 @@ namespace rupture
                                "which it weakens). Allowed: linear slip "
                                "weakening and the rate-and-state laws, or "
                                "the criterion rupture front alone."));
+        fault_refinement = std::make_unique<Adaptivity::FaultRefinement<dim>>(
+          mesh_refinement,
+          triangulation,
+          *fault,
+          [this](const typename Triangulation<dim>::cell_iterator &cell) {
+            return base_level(cell);
+          },
+          fe_degree);
       }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();

@@ -3,6 +3,7 @@
 // SolutionTransfer, and everything that depends on the mesh is set up
 // again.
 
+#include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/fault/fault.h>
 #include <rupture/simulator/simulator.h>
 
@@ -18,7 +19,8 @@ namespace rupture
   unsigned int
   Simulator<dim>::execute_refinement()
   {
-    fault_levels_now.reset();
+    if (fault_refinement)
+      fault_refinement->mesh_changed();
     // The motion and the fault's state, with ghost entries, attached to
     // the mesh. (The forces of the energy sums belong to their mesh: the
     // callers compute them anew, refresh_step_forces().)

@@ -1,3 +1,4 @@
+#include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/base/interruption.h>
 #include <rupture/base/time_units.h>
 #include <rupture/base/utilities.h>
@@ -78,8 +79,8 @@ namespace rupture
     AssertThrow(mesh_refinement.max_dofs == 0 ||
                   mesh_refinement.max_dofs >= dof_handler.n_dofs(),
                 ExcMessage("<Mesh refinement/Maximum degrees of freedom> = " +
-                           std::to_string(static_cast<long long>(
-                             mesh_refinement.max_dofs)) +
+                           std::to_string(
+                             static_cast<long long>(mesh_refinement.max_dofs)) +
                            " is below the " +
                            std::to_string(dof_handler.n_dofs()) +
                            " degrees of freedom of the base mesh, which the "
@@ -646,7 +647,8 @@ namespace rupture
              mesh_refinement.due(state.step,
                                  state.clock.phase_time,
                                  state.time_step) ||
-             front_outside_fine_cells()) &&
+             fault_refinement->front_outside_fine_cells(
+               state.clock.phase_time)) &&
             adapt_mesh(duration, requested_time_step(), i))
           n_steps = static_cast<unsigned int>(
             clock.steps_of_phase(duration, state.time_step));
@@ -760,7 +762,7 @@ namespace rupture
       {
         row.push_back(static_cast<double>(dof_handler.n_dofs()));
         row.push_back(energy.remeshing);
-        row.push_back(test_mode ? 0. : adaptation_seconds);
+        row.push_back(test_mode ? 0. : fault_refinement->seconds());
       }
     // The friction state's range, after all others.
     for (unsigned int i = 0; i < f.state_minimum.size(); ++i)

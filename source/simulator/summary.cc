@@ -1,3 +1,4 @@
+#include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/output/statistics_columns.h>
 #include <rupture/simulator/simulator.h>
 
@@ -34,8 +35,8 @@ namespace rupture
                 0.)
           << " ns per DoF-step per core\n";
     if (mesh_refinement.enabled())
-      pcout << "   Mesh refinement: " << n_adaptations << " adaptations in "
-            << adaptation_seconds
+      pcout << "   Mesh refinement: " << fault_refinement->n_adaptations()
+            << " adaptations in " << fault_refinement->seconds()
             << " s (the first before the time loop, the others in it), "
             << peak_dofs << " DoFs at the peak, " << dof_steps
             << " DoF-steps\n";
@@ -164,11 +165,12 @@ namespace rupture
         << "  \"dofs\": " << dof_handler.n_dofs() << ",\n"
         << "  \"steps\": " << state.step << ",\n";
     if (mesh_refinement.enabled())
-      out << "  \"mesh adaptations\": " << n_adaptations << ",\n"
+      out << "  \"mesh adaptations\": " << fault_refinement->n_adaptations()
+          << ",\n"
           << "  \"peak dofs\": " << json_number(peak_dofs) << ",\n"
           << "  \"dof-steps\": " << json_number(dof_steps) << ",\n"
           << "  \"adaptation wall time\": "
-          << json_number(test_mode ? 0. : adaptation_seconds) << ",\n";
+          << json_number(test_mode ? 0. : fault_refinement->seconds()) << ",\n";
     out << "  \"time\": " << json_number(state.clock.phase_time) << ",\n"
         << "  \"time since the start of the run\": " << json_number(state.time)
         << ",\n"

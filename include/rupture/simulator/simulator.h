@@ -56,7 +56,7 @@ namespace rupture
   namespace Adaptivity
   {
     template <int dim>
-    class ProcessZoneCriterion;
+    class FaultRefinement;
   }
 
   using namespace dealii;
@@ -181,35 +181,6 @@ namespace rupture
     adapt_mesh(const double       duration,
                const double       requested_time_step,
                const unsigned int steps_done);
-    /// The finest level of the fault's cells now, and whether an
-    /// adaptation has refined one of them beyond its base level (or found
-    /// nothing to refine while a node was active), over all processes.
-    /// Collective; cached until the mesh changes.
-    std::pair<unsigned int, bool>
-    fault_levels() const;
-    /// The criterion "process zone" of the fault as it is now (the widths
-    /// of all processes), or none without it. Collective.
-    std::unique_ptr<Adaptivity::ProcessZoneCriterion<dim>>
-    process_zone_criterion() const;
-    /// The finest level the cell @p cell of the fault may have at its
-    /// fault face @p face: its base level plus <Mesh refinement/Levels>,
-    /// or less where the process zone @p zone (if given, its width
-    /// divided by @p margin) needs less.
-    unsigned int
-    finest_fault_level(const typename Triangulation<dim>::cell_iterator &cell,
-                       const unsigned int                                face,
-                       const Adaptivity::ProcessZoneCriterion<dim>      *zone,
-                       const double margin = 1) const;
-    /// The DoFs the mesh would have after the flags set now: the present
-    /// ones times the ratio of the cell counts. Collective.
-    double
-    dofs_after_flags() const;
-    /// True when the mesh should be adapted between the regular times:
-    /// no fault cell is refined beyond its base level yet (a rupture that
-    /// starts without an overstressed patch, as rate-and-state nucleation does)
-    /// and a fault node has become active. Collective.
-    bool
-    front_outside_fine_cells() const;
     /// The time step the current phase asks for (0: the explicit
     /// scheme's Courant fraction of the stable step).
     double
@@ -703,18 +674,13 @@ namespace rupture
     /// The level of the scene's cells as it builds them (a box of blocks
     /// refines its blocks itself): the base of base_level().
     unsigned int scene_levels = 0;
-    /// Wall time of the adaptations of the mesh (s), and their number;
-    /// the DoFs summed over the steps this process ran, and their peak.
-    double       adaptation_seconds = 0;
-    unsigned int n_adaptations      = 0;
-    double       dof_steps          = 0;
-    double       peak_dofs          = 0;
-    /// fault_levels() of the present mesh, once computed (reset when the
-    /// mesh changes).
-    mutable std::optional<std::pair<unsigned int, bool>> fault_levels_now;
-    /// <Mesh refinement/Maximum degrees of freedom> held a refinement back
-    /// (said once).
-    bool budget_reported = false;
+    /// Which cells the mesh that follows the rupture refines and
+    /// coarsens, and how many adaptations it made (with <Mesh refinement>
+    /// only).
+    std::unique_ptr<Adaptivity::FaultRefinement<dim>> fault_refinement;
+    /// The DoFs summed over the steps this process ran, and their peak.
+    double dof_steps = 0;
+    double peak_dofs = 0;
   };
 } // namespace rupture
 
