@@ -24,6 +24,7 @@ namespace rupture
     // The motion and the fault's state, with ghost entries, attached to
     // the mesh. (The forces of the energy sums belong to their mesh: the
     // callers compute them anew, refresh_step_forces().)
+    timer.enter_subsection("Refinement: attach");
     const std::vector<VectorType *> fields = {&state.displacement,
                                               &state.velocity,
                                               &state.acceleration};
@@ -58,9 +59,13 @@ namespace rupture
     parallel::distributed::SolutionTransfer<dim, Distributed> transfer(
       dof_handler);
     transfer.prepare_for_coarsening_and_refinement(in);
+    timer.leave_subsection();
+    timer.enter_subsection("Refinement: new mesh");
     triangulation.execute_coarsening_and_refinement();
+    timer.leave_subsection();
 
     setup_dofs();
+    TimerOutput::Scope         t(timer, "Refinement: interpolate");
     std::vector<Distributed *> out;
     for (auto &v : values)
       {

@@ -253,6 +253,7 @@ namespace rupture
         fe_collection.push_back(
           FESystem<dim>(FE_Nothing<dim>(), dim, FE_Q<dim>(fe_degree), dim));
       }
+    timer.enter_subsection("Set up DoFs: distribute");
     dof_handler.reinit(triangulation);
     if (fault)
       for (const auto &cell : dof_handler.active_cell_iterators())
@@ -266,8 +267,10 @@ namespace rupture
     hanging_constraints.clear();
     hanging_constraints.reinit(locally_relevant_dofs);
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    timer.leave_subsection();
     if (fault)
       {
+        TimerOutput::Scope  t(timer, "Set up DoFs: fault");
         std::vector<double> shear_modulus;
         for (unsigned int m = 0; m < materials.n_materials(); ++m)
           shear_modulus.push_back(materials.get(m).mu);
@@ -442,6 +445,7 @@ namespace rupture
     if (fault)
       pcout << "   Fault: " << fault->n_split_nodes() << " split node pairs, "
             << fault->n_welded_nodes() << " welded interface nodes\n";
+    TimerOutput::Scope outputs(timer, "Set up DoFs: outputs");
     receivers->setup(dof_handler, locally_owned_dofs);
     // The rigid-body modes are the near null space of the algebraic
     // multigrid: only runs with a system matrix need them.
