@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rupture
 {
@@ -66,10 +67,11 @@ namespace rupture
     {
       if (!parameters.process_zone)
         return nullptr;
-      // The widths are kept per cube as large as the coarsest fault face
+      // The widths are kept per cube as large as the smallest fault face
       // of the base mesh, which is where the criterion asks
-      // (finest_fault_level()).
-      double edge = 0;
+      // (finest_fault_level()): a graded mesh's large faces far out would
+      // otherwise mix a barrier's tiny zones into the core's cubes.
+      double edge = std::numeric_limits<double>::max();
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
@@ -79,9 +81,9 @@ namespace rupture
                 while (static_cast<unsigned int>(ancestor->level()) >
                        base_level(cell))
                   ancestor = ancestor->parent();
-                edge = std::max(edge, edge_of(ancestor->face(f), dim));
+                edge = std::min(edge, edge_of(ancestor->face(f), dim));
               }
-      edge = dealii::Utilities::MPI::max(edge, communicator);
+      edge = dealii::Utilities::MPI::min(edge, communicator);
       const ProcessZoneCriterion<dim> mine(fault.process_zone_widths(),
                                            edge,
                                            parameters.nodes_per_zone,

@@ -31,8 +31,10 @@ namespace rupture
        * @p widths: fault nodes with a finite process-zone width (m), of the
        * whole fault (or their binned() summary). The widths are kept per
        * cube of side @p bin_size (the narrowest in each): a face is judged
-       * by the cubes its edge around its centre reaches, so bins as large
-       * as the coarsest fault face keep that to 3^dim cubes.
+       * by the cubes that the face itself touches, so cubes as large as
+       * the smallest fault face of the base mesh keep that to a few cubes
+       * there and resolve the zone's changes (a strength barrier's edge)
+       * as finely as the base mesh does.
        */
       ProcessZoneCriterion(
         const std::vector<std::pair<dealii::Point<dim>, double>> &widths,
@@ -103,10 +105,10 @@ namespace rupture
       /**
        * The level at which a face of edge @p edge (m) at @p level, centred
        * at @p centre, has <Nodes per process zone> node spacings in the
-       * narrowest zone near it, the zone taken @p margin times narrower (a
-       * margin above 1 for coarsening: a cell coarsens only when its parent
-       * is fine enough with room to spare). Below @p level where the face is
-       * finer than it needs; -1 where no node near it weakens.
+       * narrowest zone of the cubes it touches, the zone taken @p margin times
+       * narrower (a margin above 1 for coarsening: a cell coarsens only when
+       * its parent is fine enough with room to spare). Below @p level where the
+       * face is finer than it needs; -1 where no node near it weakens.
        */
       int
       level_needed(const dealii::Point<dim> &centre,
@@ -114,7 +116,7 @@ namespace rupture
                    const unsigned int        level,
                    const double              margin = 1) const
       {
-        const double w = narrowest(centre, edge);
+        const double w = narrowest(centre, 0.5 * edge);
         if (!std::isfinite(w))
           return -1;
         const double spacing = edge / degree;
