@@ -249,11 +249,9 @@ namespace rupture
                                     const double    pressure,
                                     const double    shear_modulus) const
     {
-      const Constants c = LawUtilities::constants(functions, x, state);
-      return LawUtilities::process_zone_at_rest(shear_modulus,
-                                                c[3],
-                                                c[2],
-                                                pressure);
+      // The constants' slip scale and strength drop (see the header).
+      return LawUtilities::process_zone_of_constants(
+        functions, x, state, pressure, shear_modulus, 3, 2);
     }
 
 
