@@ -8,10 +8,12 @@
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <algorithm>
 #include <iomanip>
+#include <memory>
 
 namespace rupture
 {
@@ -56,12 +58,41 @@ namespace rupture
         values[k].update_ghost_values();
         in.push_back(&values[k]);
       }
-    parallel::distributed::SolutionTransfer<dim, Distributed> transfer(
-      dof_handler);
-    transfer.prepare_for_coarsening_and_refinement(in);
+    using Transfer = parallel::distributed::SolutionTransfer<dim, Distributed>;
+    auto transfer  = std::make_unique<Transfer>(dof_handler);
+    transfer->prepare_for_coarsening_and_refinement(in);
     timer.leave_subsection();
     timer.enter_subsection("Refinement: new mesh");
     triangulation.execute_coarsening_and_refinement();
+    // The mesh's balance (p4est's, which sees all processes) may have
+    // refined or coarsened a cell on one side of the fault only, and the
+    // fault's node pairs need both sides alike: before the fault is set
+    // up, the fields go to this mesh on its DoFs alone, the cells that
+    // lack a level are refined, and the fields go on to that mesh.
+    for (unsigned int k = 0;
+         fault && k < 2 * mesh_refinement.levels + 2 && flag_fault_alike();
+         ++k)
+      {
+        dof_handler.reinit(triangulation);
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            cell->set_active_fe_index(fault->side(cell));
+        dof_handler.distribute_dofs(fe_collection);
+        IndexSet relevant;
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+        std::vector<Distributed *> here;
+        for (auto &v : values)
+          {
+            v.reinit(dof_handler.locally_owned_dofs(), relevant, communicator);
+            here.push_back(&v);
+          }
+        transfer->interpolate(here);
+        for (auto &v : values)
+          v.update_ghost_values();
+        transfer = std::make_unique<Transfer>(dof_handler);
+        transfer->prepare_for_coarsening_and_refinement(in);
+        triangulation.execute_coarsening_and_refinement();
+      }
     timer.leave_subsection();
 
     setup_dofs();
@@ -72,7 +103,7 @@ namespace rupture
         v.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
         out.push_back(&v);
       }
-    transfer.interpolate(out);
+    transfer->interpolate(out);
     for (unsigned int k = 0; k < carried.size(); ++k)
       {
         carried[k].reinit(locally_owned_dofs, communicator);
