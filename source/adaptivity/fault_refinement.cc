@@ -24,6 +24,17 @@ namespace rupture
       {
         return std::pow(face->measure(), 1. / (dim - 1));
       }
+
+      /// The ancestor of @p cell on level @p base (the cell itself if it
+      /// is there): where the process-zone criterion asks.
+      template <class CellIterator>
+      CellIterator
+      ancestor_on(CellIterator cell, const unsigned int base)
+      {
+        while (static_cast<unsigned int>(cell->level()) > base)
+          cell = cell->parent();
+        return cell;
+      }
     } // namespace
 
 
@@ -76,13 +87,11 @@ namespace rupture
         if (cell->is_locally_owned())
           for (const auto f : cell->face_indices())
             if (at_fault(cell, f))
-              {
-                CellIterator ancestor = cell;
-                while (static_cast<unsigned int>(ancestor->level()) >
-                       base_level(cell))
-                  ancestor = ancestor->parent();
-                edge = std::min(edge, edge_of(ancestor->face(f), dim));
-              }
+              edge = std::min(
+                edge,
+                edge_of(
+                  ancestor_on(CellIterator(cell), base_level(cell))->face(f),
+                  dim));
       edge = dealii::Utilities::MPI::min(edge, communicator);
       const ProcessZoneCriterion<dim> mine(fault.process_zone_widths(),
                                            edge,
@@ -110,10 +119,8 @@ namespace rupture
       // Asked at the cell's ancestor of the base mesh, so that every level
       // of a cell gets the same answer (a cell never undoes its refinement
       // because its own, smaller face sees fewer of the zone's nodes).
-      auto ancestor = cell;
-      while (static_cast<unsigned int>(ancestor->level()) > base)
-        ancestor = ancestor->parent();
-      const int needed = zone->level_needed(ancestor->face(face)->center(),
+      const auto ancestor = ancestor_on(cell, base);
+      const int  needed   = zone->level_needed(ancestor->face(face)->center(),
                                             edge_of(ancestor->face(face), dim),
                                             ancestor->level(),
                                             margin);
