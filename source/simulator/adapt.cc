@@ -16,32 +16,6 @@
 namespace rupture
 {
   template <int dim>
-  unsigned int
-  Simulator<dim>::base_level(
-    const typename Triangulation<dim>::cell_iterator &cell) const
-  {
-    // As make_mesh() refines: the scene's own levels and the global
-    // refinements, then one level more
-    // for each ancestor (or the cell itself) whose centre lies in the
-    // static refinement region, up to its number of levels.
-    unsigned int level = scene_levels + n_global_refinements;
-    for (unsigned int k = 0; k < n_region_refinements; ++k)
-      {
-        if (level > static_cast<unsigned int>(cell->level()))
-          break;
-        auto ancestor = cell;
-        while (static_cast<unsigned int>(ancestor->level()) > level)
-          ancestor = ancestor->parent();
-        if (!(refinement_region->value(ancestor->center()) > 0))
-          break;
-        ++level;
-      }
-    return level;
-  }
-
-
-
-  template <int dim>
   bool
   Simulator<dim>::adapt_mesh(const double       duration,
                              const double       requested_time_step,
@@ -78,7 +52,8 @@ namespace rupture
     // One level per pass; coarsening in the first only.
     for (unsigned int pass = 0; pass <= mesh_refinement.levels; ++pass)
       {
-        if (!fault_refinement->flag(pass == 0, dof_handler.n_dofs()))
+        if (!fault_refinement->flag(pass == 0,
+                                    discretization.dof_handler().n_dofs()))
           break;
         timer.leave_subsection();
         pcout.set_condition(false);
@@ -87,8 +62,8 @@ namespace rupture
           n_without += execute_refinement();
           // Both cells of every fault face alike (the mesh's balance may
           // have refined one side only, or coarsened one).
-          for (unsigned int k = 0;
-               k < 2 * mesh_refinement.levels + 2 && flag_fault_alike();
+          for (unsigned int k = 0; k < 2 * mesh_refinement.levels + 2 &&
+                                   discretization.flag_fault_alike();
                ++k)
             n_without += execute_refinement();
         }
@@ -125,10 +100,11 @@ namespace rupture
         // Newmark's energy identity holds for an acceleration that is in
         // balance with the forces (M a = f - K u - C v - contact), which
         // the interpolated one is not on the new mesh.
-        VectorType load(locally_owned_dofs, communicator);
+        VectorType load(discretization.locally_owned_dofs(), communicator);
         assemble_load_vector(state.time, load);
         energy.contact_force = 0;
-        fault->add_contact_force(hanging_constraints, energy.contact_force);
+        fault->add_contact_force(discretization.hanging_constraints(),
+                                 energy.contact_force);
         compute_acceleration(load);
       }
     refresh_step_forces();
@@ -136,23 +112,24 @@ namespace rupture
 
     // The energy the interpolation added, counted apart so that the
     // budget stays closed.
-    VectorType product(locally_owned_dofs, communicator);
+    VectorType product(discretization.locally_owned_dofs(), communicator);
     apply_stiffness(state.displacement, product);
-    hanging_constraints.set_zero(product);
+    discretization.hanging_constraints().set_zero(product);
     energy.strain = 0.5 * (state.displacement * product);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(state.velocity, product);
-        hanging_constraints.set_zero(product);
+        discretization.hanging_constraints().set_zero(product);
         energy.kinetic = 0.5 * (state.velocity * product);
       }
     energy.remeshing += energy.kinetic + energy.strain - energy_before;
 
     fault_refinement->count(MPI_Wtime() - wall_start);
     pcout << "   Mesh adapted after step " << state.step << ": "
-          << triangulation.n_global_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " DoFs, " << fault->n_split_nodes()
-          << " fault pairs (" << pairs_before << " before"
+          << discretization.triangulation().n_global_active_cells()
+          << " cells, " << discretization.dof_handler().n_dofs() << " DoFs, "
+          << fault->n_split_nodes() << " fault pairs (" << pairs_before
+          << " before"
           << (n_without > 0 ?
                 ", " + std::to_string(n_without) + " without an old pair near" :
                 std::string())

@@ -25,11 +25,14 @@ namespace rupture
     using Scheme        = TimeIntegration::Scheme;
     const Scheme scheme = time_parameters.scheme;
 
-    const hp::QCollection<dim>     q_cells(QGauss<dim>(fe_degree + 1));
-    const hp::QCollection<dim>     q_lumped(QGaussLobatto<dim>(fe_degree + 1));
+    const hp::QCollection<dim> q_cells(
+      QGauss<dim>(discretization.degree() + 1));
+    const hp::QCollection<dim> q_lumped(
+      QGaussLobatto<dim>(discretization.degree() + 1));
     const hp::QCollection<dim - 1> q_faces(
-      QGaussLobatto<dim - 1>(fe_degree + 1));
-    const hp::QCollection<dim - 1> q_load_faces(QGauss<dim - 1>(fe_degree + 1));
+      QGaussLobatto<dim - 1>(discretization.degree() + 1));
+    const hp::QCollection<dim - 1> q_load_faces(
+      QGauss<dim - 1>(discretization.degree() + 1));
     // (The matrix-free solver applies the consistent mass through the
     // elastic operator.)
     const bool need_mass = (scheme == Scheme::implicit_newmark &&
@@ -38,19 +41,19 @@ namespace rupture
     // computed for a stored mass matrix (the same loop): otherwise the
     // cells only contribute loads and lumped masses.
     const bool            need_matrices = !stiffness_matrix_free || need_mass;
-    hp::FEValues<dim>     hp_values(fe_collection,
+    hp::FEValues<dim>     hp_values(discretization.fe_collection(),
                                 q_cells,
                                 update_values | update_JxW_values |
                                   (need_matrices ? update_gradients :
                                                        update_default));
-    hp::FEValues<dim>     hp_lumped(fe_collection,
+    hp::FEValues<dim>     hp_lumped(discretization.fe_collection(),
                                 q_lumped,
                                 update_values | update_JxW_values);
-    hp::FEFaceValues<dim> hp_faces(fe_collection,
+    hp::FEFaceValues<dim> hp_faces(discretization.fe_collection(),
                                    q_faces,
                                    update_values | update_normal_vectors |
                                      update_JxW_values);
-    hp::FEFaceValues<dim> hp_load_faces(fe_collection,
+    hp::FEFaceValues<dim> hp_load_faces(discretization.fe_collection(),
                                         q_load_faces,
                                         update_values | update_JxW_values);
 
@@ -72,7 +75,8 @@ namespace rupture
                              ") is not a finite force density. Allowed: a "
                              "finite product (e.g. 9.81 m/s^2)."));
 
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const auto &m = materials.get(cell->material_id());
@@ -101,13 +105,11 @@ namespace rupture
             Operators::local_elasticity_matrices(
               fe_values, u, m, k, need_mass ? &mass : nullptr);
           if (!stiffness_matrix_free)
-            hanging_constraints.distribute_local_to_global(k,
-                                                           dofs,
-                                                           stiffness_matrix);
+            discretization.hanging_constraints().distribute_local_to_global(
+              k, dofs, stiffness_matrix);
           if (need_mass)
-            hanging_constraints.distribute_local_to_global(mass,
-                                                           dofs,
-                                                           mass_matrix);
+            discretization.hanging_constraints().distribute_local_to_global(
+              mass, dofs, mass_matrix);
 
           // Gravity: rho g.
           load.reinit(n);
@@ -131,9 +133,8 @@ namespace rupture
                     m.density *
                     dealii::Utilities::fixed_power<2>(lv.shape_value(i, q)) *
                     lv.JxW(q);
-              hanging_constraints.distribute_local_to_global(lumped,
-                                                             dofs,
-                                                             lumped_mass);
+              discretization.hanging_constraints().distribute_local_to_global(
+                lumped, dofs, lumped_mass);
             }
 
           for (const auto f : cell->face_indices())
@@ -178,13 +179,14 @@ namespace rupture
                                         fv[u].value(i, q).norm_square() *
                                         fv.JxW(q);
                       }
-                  hanging_constraints.distribute_local_to_global(
-                    absorbing, dofs, absorbing_damping);
+                  discretization.hanging_constraints()
+                    .distribute_local_to_global(absorbing,
+                                                dofs,
+                                                absorbing_damping);
                 }
             }
-          hanging_constraints.distribute_local_to_global(load,
-                                                         dofs,
-                                                         constant_load);
+          discretization.hanging_constraints().distribute_local_to_global(
+            load, dofs, constant_load);
         }
 
     if (!stiffness_matrix_free)
@@ -248,11 +250,11 @@ namespace rupture
     // system singular, and the solver would break down.
     if (scheme == Scheme::quasi_static)
       {
+        const auto              held_here = discretization.held_components();
         std::array<double, dim> held{};
-        for (const auto &k : kinematic_dofs)
-          held[k.component] = 1;
         for (unsigned int c = 0; c < dim; ++c)
-          held[c] = dealii::Utilities::MPI::max(held[c], communicator);
+          held[c] =
+            dealii::Utilities::MPI::max(held_here[c] ? 1. : 0., communicator);
         std::string  free_directions;
         unsigned int n_free = 0;
         for (unsigned int c = 0; c < dim; ++c)
@@ -277,11 +279,12 @@ namespace rupture
     state.time_step = requested_time_step;
     if (scheme == Scheme::explicit_central_difference)
       {
-        const double omega = element_frequencies.highest(dof_handler,
-                                                         materials,
-                                                         fe_degree,
-                                                         communicator);
-        stable_time_step   = TimeIntegration::central_difference_stable_step(
+        const double omega =
+          element_frequencies.highest(discretization.dof_handler(),
+                                      materials,
+                                      discretization.degree(),
+                                      communicator);
+        stable_time_step = TimeIntegration::central_difference_stable_step(
           omega,
           rayleigh_alpha,
           rayleigh_beta,
@@ -332,7 +335,7 @@ namespace rupture
             time_parameters,
             *services,
             *services,
-            *services,
+            discretization,
             fault.get(),
             newton,
             newton_parameters,
@@ -383,9 +386,8 @@ namespace rupture
           ((zone_factor != 0 && fault_zone->contains(cell)) ? zone_factor : 0.);
         if (with_mass)
           k.add(mass_factor, mass);
-        increment_constraints.distribute_local_to_global(k,
-                                                         dofs,
-                                                         system_matrix);
+        discretization.increment_constraints().distribute_local_to_global(
+          k, dofs, system_matrix);
       });
     system_matrix.compress(VectorOperation::add);
 
@@ -393,8 +395,8 @@ namespace rupture
     if ((mass_factor != 0 && use_lumped_mass) ||
         (absorbing_factor != 0 && has_absorbing))
       {
-        for (const auto i : locally_owned_dofs)
-          if (!increment_constraints.is_constrained(i))
+        for (const auto i : discretization.locally_owned_dofs())
+          if (!discretization.increment_constraints().is_constrained(i))
             {
               double d = 0;
               if (mass_factor != 0 && use_lumped_mass)
@@ -407,7 +409,7 @@ namespace rupture
       }
 
     max_system_diagonal = 0;
-    for (const auto i : locally_owned_dofs)
+    for (const auto i : discretization.locally_owned_dofs())
       max_system_diagonal =
         std::max(max_system_diagonal, std::abs(system_matrix.diag_element(i)));
     max_system_diagonal =
@@ -416,7 +418,7 @@ namespace rupture
     linear_solver.initialize(system_matrix,
                              rigid_body_modes(),
                              true,
-                             fe_degree > 1);
+                             discretization.degree() > 1);
   }
 
 
@@ -431,15 +433,17 @@ namespace rupture
       return;
     TimerOutput::Scope t(timer, "Assemble loads");
     body_force->set_time(time);
-    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>                    hp_values(fe_collection,
+    const hp::QCollection<dim> q_cells(
+      QGauss<dim>(discretization.degree() + 1));
+    hp::FEValues<dim> hp_values(discretization.fe_collection(),
                                 q_cells,
                                 update_values | update_quadrature_points |
                                   update_JxW_values);
-    Vector<double>                       local, f(dim);
+    Vector<double>    local, f(dim);
     std::vector<types::global_dof_index> dofs;
     std::string                          bad_point;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && bad_point.empty())
         {
           const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
@@ -467,7 +471,9 @@ namespace rupture
                 local(i) +=
                   (force * fe_values[u].value(i, q)) * fe_values.JxW(q);
             }
-          hanging_constraints.distribute_local_to_global(local, dofs, load);
+          discretization.hanging_constraints().distribute_local_to_global(local,
+                                                                          dofs,
+                                                                          load);
         }
     // Every process stops, not only the one that found the value.
     AssertThrow(dealii::Utilities::MPI::max(bad_point.empty() ? 0 : 1,
@@ -490,15 +496,17 @@ namespace rupture
   {
     const VectorType &u_ghost = ghosted_copy(0, state.displacement);
     exact_displacement->set_time(time);
-    const hp::QCollection<dim>  q_cells(QGauss<dim>(fe_degree + 2));
-    hp::FEValues<dim>           hp_values(fe_collection,
+    const hp::QCollection<dim> q_cells(
+      QGauss<dim>(discretization.degree() + 2));
+    hp::FEValues<dim>           hp_values(discretization.fe_collection(),
                                 q_cells,
                                 update_values | update_quadrature_points |
                                   update_JxW_values);
     double                      error = 0;
     std::vector<Tensor<1, dim>> uh;
     Vector<double>              exact(dim);
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
@@ -533,12 +541,14 @@ namespace rupture
   {
     std::vector<types::global_dof_index> dofs;
     FullMatrix<double>                   k, mass;
-    const hp::QCollection<dim>           q_cells(QGauss<dim>(fe_degree + 1));
-    hp::FEValues<dim>                    hp_values(fe_collection,
+    const hp::QCollection<dim>           q_cells(
+      QGauss<dim>(discretization.degree() + 1));
+    hp::FEValues<dim> hp_values(discretization.fe_collection(),
                                 q_cells,
                                 update_values | update_gradients |
                                   update_JxW_values);
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && (!selected || selected(cell)))
         {
           const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);

@@ -268,16 +268,16 @@ namespace rupture
     std::vector<const VectorType *> pointers;
     for (unsigned int k = 0; k < fields.size(); ++k)
       {
-        ghosted[k].reinit(locally_owned_dofs,
-                          locally_relevant_dofs,
+        ghosted[k].reinit(discretization.locally_owned_dofs(),
+                          discretization.locally_relevant_dofs(),
                           communicator);
         ghosted[k] = *fields[k];
         pointers.push_back(&ghosted[k]);
       }
     parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-      dof_handler);
+      discretization.dof_handler());
     transfer.prepare_for_serialization(pointers);
-    triangulation.save((writing / "mesh").string());
+    discretization.triangulation().save((writing / "mesh").string());
 
     // This rank's fault pairs.
     if (fault)
@@ -299,7 +299,7 @@ namespace rupture
         BinaryIO::Records records;
         records["checkpoint/dimension"] = dim;
         records["checkpoint/ranks"]     = n_ranks;
-        records["checkpoint/DoFs"]      = dof_handler.n_dofs();
+        records["checkpoint/DoFs"]      = discretization.dof_handler().n_dofs();
         records["checkpoint/fields"]    = fields.size();
         state.save(records);
         energy.save(records);
@@ -373,12 +373,13 @@ namespace rupture
     AssertThrow(record("checkpoint/dimension") == dim,
                 ExcMessage("The checkpoint <" + checkpoints.resume_from +
                            "> is damaged or of another dimension."));
-    AssertThrow(record("checkpoint/DoFs") == dof_handler.n_dofs(),
-                ExcMessage(
-                  "The checkpoint <" + checkpoints.resume_from + "> has " +
-                  std::to_string(static_cast<long>(record("checkpoint/DoFs"))) +
-                  " DoFs, this run " + std::to_string(dof_handler.n_dofs()) +
-                  ": it was written for another mesh."));
+    AssertThrow(
+      record("checkpoint/DoFs") == discretization.dof_handler().n_dofs(),
+      ExcMessage("The checkpoint <" + checkpoints.resume_from + "> has " +
+                 std::to_string(static_cast<long>(record("checkpoint/DoFs"))) +
+                 " DoFs, this run " +
+                 std::to_string(discretization.dof_handler().n_dofs()) +
+                 ": it was written for another mesh."));
     const unsigned int n_saved_ranks =
       static_cast<unsigned int>(record("checkpoint/ranks"));
 
@@ -388,12 +389,12 @@ namespace rupture
                 ExcMessage("The checkpoint <" + checkpoints.resume_from +
                            "> holds other fields than this run needs."));
     for (VectorType *v : fields)
-      v->reinit(locally_owned_dofs, communicator);
+      v->reinit(discretization.locally_owned_dofs(), communicator);
     parallel::distributed::SolutionTransfer<dim, VectorType> transfer(
-      dof_handler);
+      discretization.dof_handler());
     transfer.deserialize(fields);
     for (VectorType *v : fields)
-      distribute_hanging(*v);
+      discretization.distribute_hanging(*v);
 
     state.load(records);
     energy.load(records);

@@ -18,14 +18,14 @@ namespace rupture
     TimerOutput::Scope t(timer, "Fault zone set-up");
     fault_zone = std::make_unique<Operators::FaultZoneDamping<dim>>();
     fault_zone->reinit(
-      dof_handler,
-      hanging_constraints,
+      discretization.dof_handler(),
+      discretization.hanging_constraints(),
       [this](const std::vector<types::global_dof_index> &dofs) {
         return fault->touches_fault_region(dofs);
       },
       stiffness_matrix_free ? elastic_operator.get() : nullptr,
-      locally_owned_dofs,
-      locally_relevant_dofs,
+      discretization.locally_owned_dofs(),
+      discretization.locally_relevant_dofs(),
       communicator);
     pcout << "   Fault zone damping: " << fault_zone->n_cells()
           << " cells touch the fault region, eta = " << fault_zone_fraction
@@ -40,7 +40,8 @@ namespace rupture
           const std::vector<types::global_dof_index> &dofs,
           FullMatrix<double>                         &cell_matrix,
           const FullMatrix<double> &) {
-        hanging_constraints.distribute_local_to_global(cell_matrix, dofs, k);
+        discretization.hanging_constraints().distribute_local_to_global(
+          cell_matrix, dofs, k);
       },
       [this](const auto &cell) { return fault_zone->contains(cell); });
     k.compress(VectorOperation::add);

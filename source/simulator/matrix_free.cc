@@ -29,8 +29,11 @@ namespace rupture
   {
     TimerOutput::Scope t(timer, "Matrix-free set-up");
     elastic_operator = std::make_unique<Operators::ElasticOperator<dim>>();
-    elastic_operator->reinit(
-      MappingQ1<dim>(), dof_handler, hanging_constraints, materials, fe_degree);
+    elastic_operator->reinit(MappingQ1<dim>(),
+                             discretization.dof_handler(),
+                             discretization.hanging_constraints(),
+                             materials,
+                             discretization.degree());
     elastic_operator->initialize_dof_vector(operator_src);
     elastic_operator->initialize_dof_vector(operator_dst);
     if (!test_mode)
@@ -49,12 +52,12 @@ namespace rupture
   {
     TimerOutput::Scope t(timer, "Multigrid set-up");
     typename Operators::Multigrid<dim>::Description description;
-    description.triangulation = &triangulation;
-    description.dof_handler   = &dof_handler;
-    description.constraints   = &hanging_constraints;
+    description.triangulation = &discretization.triangulation();
+    description.dof_handler   = &discretization.dof_handler();
+    description.constraints   = &discretization.hanging_constraints();
     description.fine_operator = elastic_operator.get();
-    description.fe_collection = &fe_collection;
-    description.fe_degree     = fe_degree;
+    description.fe_collection = &discretization.fe_collection();
+    description.fe_degree     = discretization.degree();
     description.materials     = &materials;
     if (fault)
       {
@@ -177,10 +180,11 @@ namespace rupture
                                const VectorType  &v) const
   {
     if (!ghosts)
-      ghosts = std::make_unique<GhostedVectors>(locally_owned_dofs,
-                                                locally_relevant_dofs,
-                                                communicator,
-                                                2);
+      ghosts =
+        std::make_unique<GhostedVectors>(discretization.locally_owned_dofs(),
+                                         discretization.locally_relevant_dofs(),
+                                         communicator,
+                                         2);
     return ghosts->copy(slot, v);
   }
 

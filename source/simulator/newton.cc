@@ -70,9 +70,9 @@ namespace rupture
     TimerOutput::Scope t(timer, "Fault contact");
     fault->assemble(ghosted_copy(0, state.displacement),
                     state.time_step,
-                    hanging_constraints,
+                    discretization.hanging_constraints(),
                     force,
-                    increment_constraints,
+                    discretization.increment_constraints(),
                     with_tangent ? &system_matrix : nullptr,
                     sign);
   }
@@ -95,11 +95,14 @@ namespace rupture
         // Only at the free DoFs: the prescribed ones follow their boundary
         // motion, the hanging ones their parents.
         scratch = *predicted_increment;
-        increment_constraints.set_zero(scratch);
+        discretization.increment_constraints().set_zero(scratch);
         state.displacement += scratch;
       }
-    add_kinematic_increment(state.displacement);
-    distribute_hanging(state.displacement);
+    discretization.impose_kinematic_motion(state.displacement,
+                                           state.displacement,
+                                           state.time,
+                                           state.time_step);
+    discretization.distribute_hanging(state.displacement);
 
     double reference = 0;
     // The displacement that the step's force scale produces through the
@@ -125,7 +128,7 @@ namespace rupture
             update_rates();
             compute_residual();
             free_residual = residual;
-            increment_constraints.set_zero(free_residual);
+            discretization.increment_constraints().set_zero(free_residual);
           }
         residual_current  = false;
         const double norm = free_residual.l2_norm();
@@ -152,7 +155,7 @@ namespace rupture
                 // The force scale of the step: the residual may start tiny
                 // (a body near equilibrium), so the internal forces count.
                 apply_stiffness(old_u, scratch);
-                increment_constraints.set_zero(scratch);
+                discretization.increment_constraints().set_zero(scratch);
                 // A prestressed fault at rest: the forces of its initial
                 // traction.
                 reference = std::max({norm,
@@ -248,8 +251,9 @@ namespace rupture
                 VectorType diagonal(system_diagonal);
                 if (!linear_solver.matrix_free())
                   {
-                    diagonal.reinit(locally_owned_dofs, communicator);
-                    for (const auto i : locally_owned_dofs)
+                    diagonal.reinit(discretization.locally_owned_dofs(),
+                                    communicator);
+                    for (const auto i : discretization.locally_owned_dofs())
                       diagonal(i) = system_matrix.diag_element(i);
                     diagonal.compress(VectorOperation::insert);
                   }
@@ -306,7 +310,7 @@ namespace rupture
                 linear_solver.initialize(system_matrix,
                                          null_space,
                                          false,
-                                         fe_degree > 1);
+                                         discretization.degree() > 1);
                 newton.preconditioner_signature = signature;
               }
           }
@@ -385,7 +389,7 @@ namespace rupture
             scratch = 0;
             assemble_contact(scratch, true, -1);
           }
-        increment_constraints.distribute(increment);
+        discretization.increment_constraints().distribute(increment);
         // Nodes that would jump across the stick region stop inside it
         // (Fault::limit_stick_crossings()).
         unsigned int n_limited = 0;
@@ -393,14 +397,15 @@ namespace rupture
             !newton.stick_crossing_limit_suspended)
           {
             scratch   = 0;
-            n_limited = fault->limit_stick_crossings(ghosted_copy(1, increment),
-                                                     increment_constraints,
-                                                     scratch);
+            n_limited = fault->limit_stick_crossings(
+              ghosted_copy(1, increment),
+              discretization.increment_constraints(),
+              scratch);
             newton.stick_crossings_limited += n_limited;
             if (n_limited > 0)
               {
                 increment += scratch;
-                increment_constraints.distribute(increment);
+                discretization.increment_constraints().distribute(increment);
               }
           }
         if (fault)
@@ -420,7 +425,7 @@ namespace rupture
                 update_rates();
                 compute_residual();
                 free_residual = residual;
-                increment_constraints.set_zero(free_residual);
+                discretization.increment_constraints().set_zero(free_residual);
                 if (free_residual.l2_norm() <= (1 - 1e-4 * alpha) * norm ||
                     trial == 6 || n_limited > 0)
                   break;

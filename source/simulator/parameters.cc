@@ -49,48 +49,7 @@ namespace rupture
 
     prm.enter_subsection("Discretization");
     {
-      prm.declare_entry("Initial global refinement",
-                        "0",
-                        Patterns::Integer(0, 12),
-                        "Number of times each coarse cell of the scene is "
-                        "refined (each halves the cell size).");
-      prm.declare_entry(
-        "Refinement region",
-        "0",
-        Patterns::Anything(),
-        "Cells whose centre makes this function of position (x, y and, in "
-        "3-D, z) positive are refined <Refinement region levels> more times "
-        "after the global refinement, e.g. 'x < 1000 ? 1 : 0' or "
-        "'abs(z) < 5000'. Neighbouring cells differ by at most one level; "
-        "the hanging nodes between them are constrained. The fault is "
-        "refined alike on both sides: where the region takes a cell next "
-        "to the fault, the cell across the fault is refined with it. In "
-        "3-D the fault may then be finer in some parts than in others: "
-        "its nodes on the border of a finer part hang and follow the "
-        "nodes around them (with either <Fault/Model>). The multigrid "
-        "preconditioner needs this region off (0).");
-      prm.declare_entry("Refinement region levels",
-                        "0",
-                        Patterns::Integer(0, 6),
-                        "How many times the cells of <Refinement region> "
-                        "are refined (each halves their size). 0 leaves the "
-                        "mesh as the global refinement made it.");
-      prm.declare_entry("Polynomial degree",
-                        "1",
-                        Patterns::Integer(1, 4),
-                        "Degree p of the FE_Q displacement elements, 1 to "
-                        "4: 1 is the paper's (bi/trilinear). The nodes of "
-                        "degree p sit at the Gauss-Lobatto points of each "
-                        "cell, so a cell of size h has nodes h/p apart on "
-                        "average (the node spacing that the SCEC "
-                        "benchmarks' resolution refers to), and the lumped "
-                        "mass of the explicit scheme is the Gauss-Lobatto "
-                        "one of spectral elements. The stable explicit "
-                        "step is computed for the degree (at equal node "
-                        "spacing it is 0.80, 0.67 and 0.56 times degree "
-                        "1's at degrees 2, 3 and 4); <Time "
-                        "integration/Courant fraction> is a fraction of it "
-                        "at every degree.");
+      Discretization::Discretization<dim>::declare_parameters(prm);
       prm.declare_entry(
         "Stiffness operator",
         "matrix free",
@@ -423,14 +382,7 @@ namespace rupture
     test_mode = prm.get_bool("Test mode");
 
     prm.enter_subsection("Discretization");
-    n_global_refinements = prm.get_integer("Initial global refinement");
-    n_region_refinements = prm.get_integer("Refinement region levels");
-    refinement_region =
-      Utilities::parse_function<dim>(prm.get("Refinement region"),
-                                     1,
-                                     "Discretization/Refinement region",
-                                     dim == 2 ? "x,y" : "x,y,z");
-    fe_degree             = prm.get_integer("Polynomial degree");
+    discretization.parse_parameters(prm);
     use_lumped_mass       = (prm.get("Mass matrix") == "lumped");
     stiffness_matrix_free = (prm.get("Stiffness operator") == "matrix free");
     prm.leave_subsection();
@@ -510,13 +462,14 @@ namespace rupture
     materials.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     // deal.II 9.4's coarsening sequence fails on locally refined meshes.
-    AssertThrow(!linear_solver.multigrid() || n_region_refinements == 0,
-                ExcMessage("<Solver/Preconditioner> = multigrid needs a mesh "
-                           "without regional refinement, but <Discretization/"
-                           "Refinement region levels> is " +
-                           std::to_string(n_region_refinements) +
-                           ". Set it to 0, or use <Solver/Preconditioner> = "
-                           "block Jacobi or AMG."));
+    AssertThrow(
+      !linear_solver.multigrid() || discretization.n_region_refinements() == 0,
+      ExcMessage("<Solver/Preconditioner> = multigrid needs a mesh "
+                 "without regional refinement, but <Discretization/"
+                 "Refinement region levels> is " +
+                 std::to_string(discretization.n_region_refinements()) +
+                 ". Set it to 0, or use <Solver/Preconditioner> = "
+                 "block Jacobi or AMG."));
 
     scene = Scene::create<dim>(prm);
     fault = Fault::Fault<dim>::create(prm);
@@ -527,7 +480,7 @@ namespace rupture
         output_schedule.fault_interval =
           fault_output->surface_interval(output_schedule.interval);
       }
-    n_sides = fault ? 2 : 1;
+    discretization.set_fault(fault.get());
     termination.parse_parameters(prm, fault != nullptr);
     prm.enter_subsection("Checkpoint");
     checkpoints.interval = prm.get_integer("Interval");
@@ -624,12 +577,12 @@ namespace rupture
                                "the criterion rupture front alone."));
         fault_refinement = std::make_unique<Adaptivity::FaultRefinement<dim>>(
           mesh_refinement,
-          triangulation,
+          discretization.triangulation(),
           *fault,
           [this](const typename Triangulation<dim>::cell_iterator &cell) {
-            return base_level(cell);
+            return discretization.base_level(cell);
           },
-          fe_degree);
+          discretization.degree());
       }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
     has_absorbing = !boundary_conditions.absorbing.empty();

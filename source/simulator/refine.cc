@@ -34,7 +34,7 @@ namespace rupture
     for (VectorType *f : fields)
       carried.push_back(*f);
     if (fault)
-      for (auto &f : fault->state_fields(locally_owned_dofs))
+      for (auto &f : fault->state_fields(discretization.locally_owned_dofs()))
         carried.push_back(std::move(f));
     // A field is one function of the mesh only if its constrained DoFs
     // follow their constraints: a hanging DoF that becomes a regular one is
@@ -42,7 +42,7 @@ namespace rupture
     // existed before keep their own state by location, hanging ones
     // included.)
     for (auto &c : carried)
-      distribute_hanging(c);
+      discretization.distribute_hanging(c);
     // The transfer reads and writes every DoF of every cell: through
     // deal.II's own vectors (direct indexing), not Trilinos' (a map lookup
     // per entry), several times faster.
@@ -51,47 +51,43 @@ namespace rupture
     std::vector<const Distributed *> in;
     for (unsigned int k = 0; k < carried.size(); ++k)
       {
-        values[k].reinit(locally_owned_dofs,
-                         locally_relevant_dofs,
+        values[k].reinit(discretization.locally_owned_dofs(),
+                         discretization.locally_relevant_dofs(),
                          communicator);
         std::copy(carried[k].begin(), carried[k].end(), values[k].begin());
         values[k].update_ghost_values();
         in.push_back(&values[k]);
       }
     using Transfer = parallel::distributed::SolutionTransfer<dim, Distributed>;
-    auto transfer  = std::make_unique<Transfer>(dof_handler);
+    auto transfer  = std::make_unique<Transfer>(discretization.dof_handler());
     transfer->prepare_for_coarsening_and_refinement(in);
     timer.leave_subsection();
     timer.enter_subsection("Refinement: new mesh");
-    triangulation.execute_coarsening_and_refinement();
+    discretization.triangulation().execute_coarsening_and_refinement();
     // The mesh's balance (p4est's, which sees all processes) may have
     // refined or coarsened a cell on one side of the fault only, and the
     // fault's node pairs need both sides alike: before the fault is set
     // up, the fields go to this mesh on its DoFs alone, the cells that
     // lack a level are refined, and the fields go on to that mesh.
-    for (unsigned int k = 0;
-         fault && k < 2 * mesh_refinement.levels + 2 && flag_fault_alike();
+    for (unsigned int k = 0; fault && k < 2 * mesh_refinement.levels + 2 &&
+                             discretization.flag_fault_alike();
          ++k)
       {
-        dof_handler.reinit(triangulation);
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            cell->set_active_fe_index(fault->side(cell));
-        dof_handler.distribute_dofs(fe_collection);
-        IndexSet relevant;
-        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+        discretization.distribute_dofs();
         std::vector<Distributed *> here;
         for (auto &v : values)
           {
-            v.reinit(dof_handler.locally_owned_dofs(), relevant, communicator);
+            v.reinit(discretization.locally_owned_dofs(),
+                     discretization.locally_relevant_dofs(),
+                     communicator);
             here.push_back(&v);
           }
         transfer->interpolate(here);
         for (auto &v : values)
           v.update_ghost_values();
-        transfer = std::make_unique<Transfer>(dof_handler);
+        transfer = std::make_unique<Transfer>(discretization.dof_handler());
         transfer->prepare_for_coarsening_and_refinement(in);
-        triangulation.execute_coarsening_and_refinement();
+        discretization.triangulation().execute_coarsening_and_refinement();
       }
     timer.leave_subsection();
 
@@ -100,19 +96,21 @@ namespace rupture
     std::vector<Distributed *> out;
     for (auto &v : values)
       {
-        v.reinit(locally_owned_dofs, locally_relevant_dofs, communicator);
+        v.reinit(discretization.locally_owned_dofs(),
+                 discretization.locally_relevant_dofs(),
+                 communicator);
         out.push_back(&v);
       }
     transfer->interpolate(out);
     for (unsigned int k = 0; k < carried.size(); ++k)
       {
-        carried[k].reinit(locally_owned_dofs, communicator);
+        carried[k].reinit(discretization.locally_owned_dofs(), communicator);
         std::copy(values[k].begin(), values[k].end(), carried[k].begin());
       }
     for (unsigned int k = 0; k < fields.size(); ++k)
       {
         *fields[k] = carried[k];
-        distribute_hanging(*fields[k]);
+        discretization.distribute_hanging(*fields[k]);
       }
     if (!fault)
       return 0;
@@ -133,7 +131,8 @@ namespace rupture
     unsigned int       n_without      = 0;
     for (unsigned int level = 0; level < checkpoints.refinements; ++level)
       {
-        for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &cell :
+             discretization.triangulation().active_cell_iterators())
           if (cell->is_locally_owned())
             cell->set_refine_flag();
         n_without += execute_refinement();
@@ -148,8 +147,8 @@ namespace rupture
     refresh_step_forces();
     pcout << "   The checkpoint's mesh refined " << checkpoints.refinements
           << (checkpoints.refinements == 1 ? " time" : " times") << ": "
-          << triangulation.n_global_active_cells() << " cells, "
-          << dof_handler.n_dofs() << " DoFs";
+          << discretization.triangulation().n_global_active_cells()
+          << " cells, " << discretization.dof_handler().n_dofs() << " DoFs";
     if (fault)
       pcout << ", " << fault->n_split_nodes()
             << " fault pairs (the checkpoint's " << n_pairs_before
@@ -171,14 +170,15 @@ namespace rupture
     // As initialize_state() computes them, for the state as it is.
     using Scheme            = TimeIntegration::Scheme;
     const bool quasi_static = current_scheme() == Scheme::quasi_static;
-    VectorType load(locally_owned_dofs, communicator);
+    VectorType load(discretization.locally_owned_dofs(), communicator);
     assemble_load_vector(state.time, load);
     // The fault's force of its carried tractions: a new return mapping
     // would change the pairs' trial states, from which the loading phase
     // tells whether friction weakens.
     energy.contact_force = 0;
     if (fault)
-      fault->add_contact_force(hanging_constraints, energy.contact_force);
+      fault->add_contact_force(discretization.hanging_constraints(),
+                               energy.contact_force);
     VectorType ku(load), ma(load);
     apply_stiffness(state.displacement, ku);
     compute_damping_force(state.velocity, energy.damping_force);

@@ -35,11 +35,7 @@ namespace rupture
     , pcout(log.stream(),
             dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
-    , triangulation(communicator,
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
-    , n_sides(1)
+    , discretization(communicator)
     , has_absorbing(false)
     , stable_time_step(0)
     , wall_time_start(0)
@@ -72,20 +68,29 @@ namespace rupture
           << " MPI rank(s)\n";
 
     record_memory("start");
-    make_mesh();
+    {
+      TimerOutput::Scope t(timer, "Set up mesh");
+      discretization.make_mesh(*scene,
+                               materials,
+                               checkpoints.resume ?
+                                 checkpoints.resume_from + "/mesh" :
+                                 std::string(),
+                               pcout);
+    }
     record_memory("mesh");
     setup_dofs();
     record_memory("DoFs and fault");
-    AssertThrow(mesh_refinement.max_dofs == 0 ||
-                  mesh_refinement.max_dofs >= dof_handler.n_dofs(),
-                ExcMessage("<Mesh refinement/Maximum degrees of freedom> = " +
-                           std::to_string(
-                             static_cast<long long>(mesh_refinement.max_dofs)) +
-                           " is below the " +
-                           std::to_string(dof_handler.n_dofs()) +
-                           " degrees of freedom of the base mesh, which the "
-                           "adaptation never coarsens. Allowed: 0 (no limit) "
-                           "or at least the base mesh's."));
+    AssertThrow(
+      mesh_refinement.max_dofs == 0 ||
+        mesh_refinement.max_dofs >= discretization.dof_handler().n_dofs(),
+      ExcMessage(
+        "<Mesh refinement/Maximum degrees of freedom> = " +
+        std::to_string(static_cast<long long>(mesh_refinement.max_dofs)) +
+        " is below the " +
+        std::to_string(discretization.dof_handler().n_dofs()) +
+        " degrees of freedom of the base mesh, which the "
+        "adaptation never coarsens. Allowed: 0 (no limit) "
+        "or at least the base mesh's."));
     assemble_physics_matrices();
     record_memory("operators");
     // A body force or initial conditions that are not finite at t = 0 are
@@ -93,7 +98,7 @@ namespace rupture
     // interpolate_initial_conditions() name the entry and the place).
     if (has_body_force)
       {
-        VectorType load(locally_owned_dofs, communicator);
+        VectorType load(discretization.locally_owned_dofs(), communicator);
         assemble_load_vector(0, load);
       }
     interpolate_initial_conditions();
@@ -132,7 +137,6 @@ namespace rupture
         }
       catch (...)
         {}
-    dof_handler.clear();
   }
 
 
@@ -418,8 +422,8 @@ namespace rupture
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         state.velocity = 0;
-        set_kinematic_velocity(state.velocity);
-        VectorType load(locally_owned_dofs, communicator);
+        discretization.set_kinematic_velocity(state.velocity, state.time);
+        VectorType load(discretization.locally_owned_dofs(), communicator);
         assemble_load_vector(state.time, load);
         compute_acceleration(load);
         compute_damping_force(state.velocity, energy.damping_force);
@@ -570,8 +574,9 @@ namespace rupture
           fault->set_time(state.time);
 
         integrator->step();
-        dof_steps += dof_handler.n_dofs();
-        peak_dofs = std::max(peak_dofs, double(dof_handler.n_dofs()));
+        dof_steps += discretization.dof_handler().n_dofs();
+        peak_dofs =
+          std::max(peak_dofs, double(discretization.dof_handler().n_dofs()));
         check_finite(state.displacement, "displacement");
         // The displacement may still be finite when the energies computed
         // from it overflow: that is a blow-up too, and no value that is
@@ -760,7 +765,8 @@ namespace rupture
       row.push_back(energy.absorbed);
     if (mesh_refinement.enabled())
       {
-        row.push_back(static_cast<double>(dof_handler.n_dofs()));
+        row.push_back(
+          static_cast<double>(discretization.dof_handler().n_dofs()));
         row.push_back(energy.remeshing);
         row.push_back(test_mode ? 0. : fault_refinement->seconds());
       }
@@ -825,7 +831,7 @@ namespace rupture
     receivers->write(*output_directory, state.time_step);
     if (volume_due)
       {
-        volume_output->write(dof_handler,
+        volume_output->write(discretization.dof_handler(),
                              ghosted_copy(0, state.displacement),
                              ghosted_copy(1, state.velocity),
                              state.clock.phase_time,

@@ -18,7 +18,8 @@ namespace rupture
     // figures doc/performance.md compares with other codes.
     const unsigned int n_ranks =
       dealii::Utilities::MPI::n_mpi_processes(communicator);
-    const types::global_dof_index          n_dofs = dof_handler.n_dofs();
+    const types::global_dof_index n_dofs =
+      discretization.dof_handler().n_dofs();
     dealii::Utilities::System::MemoryStats stats;
     dealii::Utilities::System::get_memory_stats(stats);
     const double peak     = 1024. * stats.VmHWM;
@@ -162,7 +163,7 @@ namespace rupture
         << "  \"message\": " << json_string(message) << ",\n"
         << "  \"dimension\": " << dim << ",\n"
         << "  \"ranks\": " << n_ranks << ",\n"
-        << "  \"dofs\": " << dof_handler.n_dofs() << ",\n"
+        << "  \"dofs\": " << discretization.dof_handler().n_dofs() << ",\n"
         << "  \"steps\": " << state.step << ",\n";
     if (mesh_refinement.enabled())
       out << "  \"mesh adaptations\": " << fault_refinement->n_adaptations()

@@ -9,58 +9,25 @@
 namespace rupture
 {
   template <int dim>
-  void
-  Simulator<dim>::for_each_support_point(
-    const std::function<
-      bool(const typename DoFHandler<dim>::active_cell_iterator &)> &select,
-    const std::function<
-      void(const typename DoFHandler<dim>::active_cell_iterator &,
-           const std::vector<types::global_dof_index> &,
-           const std::vector<Point<dim>> &)> &action) const
-  {
-    // A quadrature whose points are the unit support points of each
-    // element: its mapped points are the support points of the cell's DoFs.
-    hp::QCollection<dim> support_quadrature;
-    for (unsigned int i = 0; i < fe_collection.size(); ++i)
-      support_quadrature.push_back(
-        Quadrature<dim>(fe_collection[i].get_unit_support_points()));
-    const hp::MappingCollection<dim>     mapping{MappingQ1<dim>()};
-    hp::FEValues<dim>                    fe_values(mapping,
-                                fe_collection,
-                                support_quadrature,
-                                update_quadrature_points);
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (select(cell))
-        {
-          fe_values.reinit(cell);
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          action(cell,
-                 dofs,
-                 fe_values.get_present_fe_values().get_quadrature_points());
-        }
-  }
-
-
-
-  template <int dim>
   std::vector<std::vector<double>>
   Simulator<dim>::rigid_body_modes() const
   {
     const unsigned int               n_modes = dim * (dim + 1) / 2;
     std::vector<std::vector<double>> modes(
-      n_modes, std::vector<double>(locally_owned_dofs.n_elements(), 0.));
-    for_each_support_point(
+      n_modes,
+      std::vector<double>(discretization.locally_owned_dofs().n_elements(),
+                          0.));
+    discretization.for_each_support_point(
       [](const auto &cell) { return cell->is_locally_owned(); },
       [&](const auto                                 &cell,
           const std::vector<types::global_dof_index> &dofs,
           const std::vector<Point<dim>>              &points) {
         for (unsigned int i = 0; i < dofs.size(); ++i)
           {
-            if (!locally_owned_dofs.is_element(dofs[i]))
+            if (!discretization.locally_owned_dofs().is_element(dofs[i]))
               continue;
-            const unsigned int k = locally_owned_dofs.index_within_set(dofs[i]);
+            const unsigned int k =
+              discretization.locally_owned_dofs().index_within_set(dofs[i]);
             const unsigned int c =
               cell->get_fe().system_to_component_index(i).first % dim;
             const Point<dim> &x = points[i];

@@ -59,15 +59,6 @@ namespace rupture
 
 
   template <int dim>
-  void
-  Simulator<dim>::distribute_hanging(VectorType &v) const
-  {
-    hanging_distributor.distribute(v.trilinos_vector()[0]);
-  }
-
-
-
-  template <int dim>
   const typename Simulator<dim>::VectorType &
   Simulator<dim>::current_load(const double time)
   {
@@ -126,7 +117,7 @@ namespace rupture
         y += tmp;
       }
     // Constrained DoFs have placeholder rows in M and K.
-    hanging_constraints.set_zero(y);
+    discretization.hanging_constraints().set_zero(y);
   }
 
 
@@ -138,44 +129,7 @@ namespace rupture
   {
     y = v;
     y.scale(absorbing_damping);
-    hanging_constraints.set_zero(y);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::add_kinematic_increment(VectorType &u) const
-  {
-    for (const auto &k : kinematic_dofs)
-      u(k.dof) =
-        u(k.dof) + kinematic_velocity(k, state.time - 0.5 * state.time_step) *
-                     state.time_step;
-    u.compress(VectorOperation::insert);
-  }
-
-
-
-  template <int dim>
-  double
-  Simulator<dim>::kinematic_velocity(const KinematicDof &k,
-                                     const double        t) const
-  {
-    if (!k.velocity)
-      return 0;
-    k.velocity->set_time(t);
-    return k.velocity->value(k.location, k.component);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::set_kinematic_velocity(VectorType &v) const
-  {
-    for (const auto &k : kinematic_dofs)
-      v(k.dof) = kinematic_velocity(k, state.time);
-    v.compress(VectorOperation::insert);
+    discretization.hanging_constraints().set_zero(y);
   }
 
 
@@ -189,14 +143,15 @@ namespace rupture
     Point<dim>   where;
     unsigned int where_component = 0;
     double       worst           = -1;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell :
+         discretization.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const auto                          &fe = cell->get_fe();
           std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (locally_owned_dofs.is_element(dofs[i]))
+            if (discretization.locally_owned_dofs().is_element(dofs[i]))
               {
                 const double value = v(dofs[i]);
                 const double size  = std::isfinite(value) ?
@@ -279,13 +234,14 @@ namespace rupture
     compute_damping_force(state.velocity, tmp);
     r -= tmp;
     r -= energy.contact_force;
-    increment_constraints.set_zero(r);
+    discretization.increment_constraints().set_zero(r);
     if (use_lumped_mass)
       {
         state.acceleration = r;
-        for (const auto i : locally_owned_dofs)
+        for (const auto i : discretization.locally_owned_dofs())
           state.acceleration(i) =
-            (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
+            (lumped_mass(i) > 0 &&
+             !discretization.increment_constraints().is_constrained(i)) ?
               r(i) / lumped_mass(i) :
               0.;
         state.acceleration.compress(VectorOperation::insert);
@@ -295,11 +251,12 @@ namespace rupture
         ConstrainedMass        op{[this](const VectorType &x, VectorType &y) {
                              apply_mass(x, y);
                            },
-                           increment_constraints,
-                           locally_owned_dofs};
+                           discretization.increment_constraints(),
+                           discretization.locally_owned_dofs()};
         DiagonalPreconditioner jacobi;
-        jacobi.inverse.reinit(locally_owned_dofs, communicator);
-        for (const auto i : locally_owned_dofs)
+        jacobi.inverse.reinit(discretization.locally_owned_dofs(),
+                              communicator);
+        for (const auto i : discretization.locally_owned_dofs())
           {
             const double d    = (mass_matrix.m() == 0) ?
                                   consistent_mass_diagonal(i) :
@@ -311,7 +268,7 @@ namespace rupture
         SolverCG<VectorType> cg(control);
         state.acceleration = 0;
         cg.solve(op, state.acceleration, r, jacobi);
-        distribute_hanging(state.acceleration);
+        discretization.distribute_hanging(state.acceleration);
       }
     else
       state.acceleration = 0;
@@ -330,7 +287,7 @@ namespace rupture
     const Tensor<1, dim> half_slip_velocity =
       fault ? 0.5 * fault->initial_slip_velocity_of_sides() : Tensor<1, dim>();
     std::string error;
-    for_each_support_point(
+    discretization.for_each_support_point(
       [](const auto &cell) { return cell->is_locally_owned(); },
       [&](const auto                                 &cell,
           const std::vector<types::global_dof_index> &dofs,
@@ -338,7 +295,7 @@ namespace rupture
         const auto  &fe   = cell->get_fe();
         const double side = (fault && cell->active_fe_index() == 1) ? 1. : -1.;
         for (unsigned int i = 0; i < dofs.size(); ++i)
-          if (locally_owned_dofs.is_element(dofs[i]))
+          if (discretization.locally_owned_dofs().is_element(dofs[i]))
             {
               const unsigned int c =
                 fe.system_to_component_index(i).first % dim;
@@ -362,8 +319,8 @@ namespace rupture
     rupture::Utilities::throw_if_any(error, communicator);
     state.displacement.compress(VectorOperation::insert);
     state.velocity.compress(VectorOperation::insert);
-    distribute_hanging(state.displacement);
-    distribute_hanging(state.velocity);
+    discretization.distribute_hanging(state.displacement);
+    discretization.distribute_hanging(state.velocity);
   }
 
 
@@ -375,10 +332,10 @@ namespace rupture
                                     const VectorType &ma)
   {
     energy.applied_force = load;
-    for (const auto i : locally_owned_dofs)
-      if (hanging_constraints.is_constrained(i))
+    for (const auto i : discretization.locally_owned_dofs())
+      if (discretization.hanging_constraints().is_constrained(i))
         energy.applied_force(i) = 0;
-      else if (increment_constraints.is_constrained(i) ||
+      else if (discretization.increment_constraints().is_constrained(i) ||
                current_scheme() == TimeIntegration::Scheme::quasi_static)
         energy.applied_force(i) =
           ku(i) + ma(i) + energy.damping_force(i) + energy.contact_force(i);
@@ -395,7 +352,7 @@ namespace rupture
 
     // The initial fields were interpolated in the constructor
     // (interpolate_initial_conditions()).
-    VectorType load(locally_owned_dofs, communicator);
+    VectorType load(discretization.locally_owned_dofs(), communicator);
     assemble_load_vector(0, load);
     energy.contact_force = 0;
     if (fault && fault->uses_split_nodes())
@@ -419,7 +376,7 @@ namespace rupture
       }
     else
       {
-        set_kinematic_velocity(state.velocity);
+        discretization.set_kinematic_velocity(state.velocity, state.time);
         compute_acceleration(load);
       }
 
@@ -436,13 +393,13 @@ namespace rupture
     // internal force K u_0 to their full value within the first step.
     set_applied_force(load, ku, ma);
 
-    hanging_constraints.set_zero(ku);
+    discretization.hanging_constraints().set_zero(ku);
     energy.strain = 0.5 * (state.displacement * ku);
     VectorType mv(load);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
         apply_mass(state.velocity, mv);
-        hanging_constraints.set_zero(mv);
+        discretization.hanging_constraints().set_zero(mv);
         energy.kinetic = 0.5 * (state.velocity * mv);
       }
     energy.external_work       = 0;
@@ -467,11 +424,11 @@ namespace rupture
     // The initial acceleration uses the lumped mass alone (see
     // compute_acceleration()).
     VectorType inverse(residual);
-    for (const auto i : locally_owned_dofs)
-      inverse(i) =
-        (lumped_mass(i) > 0 && !increment_constraints.is_constrained(i)) ?
-          1. / lumped_mass(i) :
-          0.;
+    for (const auto i : discretization.locally_owned_dofs())
+      inverse(i) = (lumped_mass(i) > 0 &&
+                    !discretization.increment_constraints().is_constrained(i)) ?
+                     1. / lumped_mass(i) :
+                     0.;
     inverse.compress(VectorOperation::insert);
     fault->assemble_split_node(state.displacement,
                                state.velocity,

@@ -10,14 +10,14 @@ namespace rupture
    * members (a nested class, so it reaches them without friendship). Each
    * function forwards to one member function, or is the verbatim loop the
    * integrator did itself before, so that results keep their bits. The
-   * later steps of doc/design-core-plan.md give the elastic system, Newton
-   * and the discretization classes of their own, which then implement
-   * these contracts, and this class goes away.
+   * later steps of doc/design-core-plan.md give the elastic system and
+   * Newton classes of their own, which then implement these contracts, and
+   * this class goes away (the discretization already implements
+   * TimeIntegration::Kinematics itself).
    */
   template <int dim>
   class Simulator<dim>::Services final : public Operators::ElasticSystem,
-                                         public Solver::NonlinearStep,
-                                         public TimeIntegration::Kinematics
+                                         public Solver::NonlinearStep
   {
   public:
     using VectorType = typename Simulator<dim>::VectorType;
@@ -120,50 +120,6 @@ namespace rupture
     add_contact_force(VectorType &force) override
     {
       s.assemble_contact(force, false, 1);
-    }
-
-    // TimeIntegration::Kinematics
-    const IndexSet &
-    owned_dofs() const override
-    {
-      return s.locally_owned_dofs;
-    }
-    MPI_Comm
-    communicator() const override
-    {
-      return s.communicator;
-    }
-    const AffineConstraints<double> &
-    hanging_constraints() const override
-    {
-      return s.hanging_constraints;
-    }
-    const AffineConstraints<double> &
-    increment_constraints() const override
-    {
-      return s.increment_constraints;
-    }
-    void
-    distribute_hanging(VectorType &v) const override
-    {
-      s.distribute_hanging(v);
-    }
-    void
-    set_kinematic_velocity(VectorType &v, const double t) const override
-    {
-      for (const auto &k : s.kinematic_dofs)
-        v(k.dof) = s.kinematic_velocity(k, t);
-      v.compress(VectorOperation::insert);
-    }
-    void
-    impose_kinematic_motion(const VectorType &old_u,
-                            VectorType       &u,
-                            const double      t,
-                            const double      dt) const override
-    {
-      for (const auto &k : s.kinematic_dofs)
-        u(k.dof) = old_u(k.dof) + s.kinematic_velocity(k, t - 0.5 * dt) * dt;
-      u.compress(VectorOperation::insert);
     }
 
   private:

@@ -2,8 +2,8 @@
 #define rupture_simulator_simulator_h
 
 #include <rupture/adaptivity/parameters.h>
-#include <rupture/base/constraint_distributor.h>
 #include <rupture/base/ghosted_vectors.h>
+#include <rupture/discretization/discretization.h>
 #include <rupture/fault/fault.h>
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
@@ -152,15 +152,6 @@ namespace rupture
     set_applied_force(const VectorType &load,
                       const VectorType &ku,
                       const VectorType &ma);
-    /// After a refinement of the mesh: refine the cells next to cells
-    /// across the fault that are finer, until both sides of every fault
-    /// face match (the fault's pairs need it).
-    void
-    refine_fault_alike();
-    /// Flag the cells that refine_fault_alike() refines; whether any
-    /// process flagged one.
-    bool
-    flag_fault_alike();
     /// Refine and coarsen the mesh as flagged, carry the displacement,
     /// velocity and acceleration and the fault's state to the new mesh and
     /// set up its DoFs (refine.cc); the energy sums' forces are left to
@@ -199,46 +190,17 @@ namespace rupture
                time_parameters.loading_end_time :
                time_parameters.end_time;
     }
-    /// The level a cell of the mesh had before any adaptation: the global
-    /// refinements and the static refinement region's levels.
-    unsigned int
-    base_level(const typename Triangulation<dim>::cell_iterator &cell) const;
-
-    void
-    make_mesh();
     /// Interpolate the initial displacement and velocity (with a fault's
     /// initial slip velocity); a value that is not finite is an input
     /// error. Runs before the output directory is touched.
     void
     interpolate_initial_conditions();
-    /// Refuse a mesh of @p n_coarse coarse cells (as @p source says) whose
-    /// refined size cannot fit in the memory @p available (bytes) of the
-    /// run's @p n_nodes nodes (0: unknown, no check).
-    void
-    check_mesh_size(const double       n_coarse,
-                    const std::string &source,
-                    const double       available,
-                    const unsigned int n_nodes) const;
     void
     setup_dofs();
     void
     prepare_output_directory(ParameterHandler &prm);
     std::vector<std::vector<double>>
     rigid_body_modes() const;
-
-    /**
-     * Call @p action with the DoF indices of each cell for which @p select
-     * is true and the support points of those DoFs (in the cell's order,
-     * MappingQ1): the positions of the DoFs without a global map of them.
-     */
-    void
-    for_each_support_point(
-      const std::function<
-        bool(const typename DoFHandler<dim>::active_cell_iterator &)> &select,
-      const std::function<
-        void(const typename DoFHandler<dim>::active_cell_iterator &,
-             const std::vector<types::global_dof_index> &,
-             const std::vector<Point<dim>> &)> &action) const;
 
     // --- assembly (assembly.cc) ---
     /// The operators of the mesh; with @p prepare_first_phase, the first
@@ -395,9 +357,6 @@ namespace rupture
     /// if there is one.
     const VectorType &
     current_load(const double time);
-    /// Set the hanging and welded DoFs of @p v from their constraints.
-    void
-    distribute_hanging(VectorType &v) const;
     /**
      * Solve for the displacement at the new time: one linear solve without
      * a fault, Newton's method (the paper's Fig. 6) with one. @p update_rates
@@ -473,10 +432,6 @@ namespace rupture
     void
     compute_absorbing_force(const VectorType &velocity, VectorType &y) const;
     void
-    add_kinematic_increment(VectorType &displacement) const;
-    void
-    set_kinematic_velocity(VectorType &velocity) const;
-    void
     check_finite(const VectorType  &v,
                  const std::string &what,
                  const bool         overflowed = false) const;
@@ -522,13 +477,8 @@ namespace rupture
     /// The output directory: its lock, manifest and atomic files.
     std::unique_ptr<Output::Directory> output_directory;
     bool                               test_mode;
-    unsigned int                       n_global_refinements;
-    // <Discretization/Refinement region> and its number of levels.
-    std::unique_ptr<FunctionParser<dim>> refinement_region;
-    unsigned int                         n_region_refinements;
-    unsigned int                         fe_degree;
-    bool                                 use_lumped_mass;
-    bool                                 stiffness_matrix_free = true;
+    bool                               use_lumped_mass;
+    bool                               stiffness_matrix_free = true;
     /// The matrix-free stiffness operator, if used, and the vectors that
     /// carry its argument and result.
     std::unique_ptr<Operators::ElasticOperator<dim>> elastic_operator;
@@ -571,29 +521,8 @@ namespace rupture
     Scene::BoundaryConditions<dim>           boundary_conditions;
     Solver::LinearSolver                     linear_solver;
 
-    // Discretisation.
-    parallel::distributed::Triangulation<dim> triangulation;
-    unsigned int                              n_sides;
-    hp::FECollection<dim>                     fe_collection;
-    DoFHandler<dim>                           dof_handler;
-    IndexSet                                  locally_owned_dofs;
-    IndexSet                                  locally_relevant_dofs;
-    /// Hanging-node constraints only: for the physical operators.
-    AffineConstraints<double> hanging_constraints;
-    /// Hanging nodes plus homogeneous kinematic conditions: for increments.
-    AffineConstraints<double> increment_constraints;
-    /// Locally owned kinematically constrained DoFs with their velocity.
-    struct KinematicDof
-    {
-      types::global_dof_index dof;
-      unsigned int            component;
-      Point<dim>              location;
-      FunctionParser<dim>    *velocity;
-    };
-    std::vector<KinematicDof> kinematic_dofs;
-    /// Velocity of a kinematically constrained DoF at time @p t.
-    double
-    kinematic_velocity(const KinematicDof &k, const double t) const;
+    /// The mesh, the elements, the DoFs and their constraints.
+    Discretization::Discretization<dim> discretization;
 
     // Operators. Only what the scheme needs is built.
     TrilinosWrappers::SparseMatrix   stiffness_matrix;
@@ -617,10 +546,8 @@ namespace rupture
     mutable VectorType system_work;
     /// The load of the step if it varies (current_load()).
     VectorType step_load;
-    /// Sets the tied DoFs of a vector.
-    ConstraintDistributor hanging_distributor;
-    VectorType            constant_load;
-    bool                  has_absorbing;
+    VectorType constant_load;
+    bool       has_absorbing;
 
     /// Displacement, velocity, acceleration, time, step, its number and
     /// the phase clock.
@@ -671,9 +598,6 @@ namespace rupture
     Output::Statistics                      statistics;
     /// <Mesh refinement>: the mesh that follows the rupture.
     Adaptivity::Parameters mesh_refinement;
-    /// The level of the scene's cells as it builds them (a box of blocks
-    /// refines its blocks itself): the base of base_level().
-    unsigned int scene_levels = 0;
     /// Which cells the mesh that follows the rupture refines and
     /// coarsens, and how many adaptations it made (with <Mesh refinement>
     /// only).
