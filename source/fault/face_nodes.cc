@@ -1,6 +1,7 @@
 // The Gauss-Lobatto nodes of one fault face: coordinates, interpolation
 // weights and sub-cells, for faces of any degree.
 
+#include <rupture/base/lobatto_points.h>
 #include <rupture/fault/face_nodes.h>
 
 #include <deal.II/base/exceptions.h>
@@ -14,20 +15,6 @@ namespace rupture
   {
     namespace FaceNodes
     {
-      std::vector<double>
-      points_1d(const unsigned int degree)
-      {
-        std::vector<double> x;
-        if (degree == 1)
-          return {0., 1.};
-        const QGaussLobatto<1> q(degree + 1);
-        for (unsigned int i = 0; i <= degree; ++i)
-          x.push_back(q.point(i)[0]);
-        return x;
-      }
-
-
-
       namespace
       {
         /// The Lagrange polynomials through @p nodes, at @p x.
@@ -124,7 +111,7 @@ namespace rupture
       std::vector<double>
       weights(const unsigned int degree, const std::array<double, dim - 1> &xi)
       {
-        const std::vector<double> nodes = points_1d(degree);
+        const std::vector<double> nodes = LobattoPoints::points(degree);
         const std::vector<double> la    = lagrange(nodes, xi[0]);
         if (dim == 2)
           return la;
@@ -134,19 +121,6 @@ namespace rupture
           for (unsigned int i = 0; i <= degree; ++i)
             w.push_back(la[i] * lb[j]);
         return w;
-      }
-
-
-
-      unsigned int
-      nearest_point(const unsigned int degree, const double xi)
-      {
-        const std::vector<double> nodes = points_1d(degree);
-        unsigned int              best  = 0;
-        for (unsigned int i = 1; i <= degree; ++i)
-          if (std::abs(nodes[i] - xi) < std::abs(nodes[best] - xi))
-            best = i;
-        return best;
       }
 
 

@@ -3,6 +3,7 @@
 // the pairs outside the fault region), and what the solvers need of the
 // pairs (sparsity, DoF pairs, the level interfaces of multigrid).
 
+#include <rupture/base/lobatto_points.h>
 #include <rupture/fault/face_nodes.h>
 #include <rupture/fault/fault.h>
 
@@ -206,7 +207,7 @@ namespace rupture
                       unsigned int index = 0;
                       for (unsigned int d = dim - 1; d-- > 0;)
                         index = index * (degree + 1) +
-                                FaceNodes::nearest_point(degree, xi[d]);
+                                LobattoPoints::nearest(degree, xi[d]);
                       AssertThrow(keys[index] == numbers::invalid_dof_index,
                                   ExcInternalError());
                       keys[index] = minus[k][0];

@@ -1,6 +1,6 @@
 #include <rupture/base/binary_io.h>
+#include <rupture/base/lobatto_points.h>
 #include <rupture/base/utilities.h>
-#include <rupture/fault/face_nodes.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/output/vtu_file.h>
 
@@ -83,7 +83,7 @@ namespace rupture
               fe.base_element(base).get_unit_support_points()[node];
             unsigned int lex = 0;
             for (unsigned int d = dim; d-- > 0;)
-              lex = lex * (p + 1) + Fault::FaceNodes::nearest_point(p, x[d]);
+              lex = lex * (p + 1) + LobattoPoints::nearest(p, x[d]);
             table.node_dof[lex][component % dim] = i;
             table.unit_point[lex]                = x;
           }
@@ -96,7 +96,7 @@ namespace rupture
       Point<dim>
       sub_cell_centre(const unsigned int degree, unsigned int sub)
       {
-        const std::vector<double> gl = Fault::FaceNodes::points_1d(degree);
+        const std::vector<double> gl = LobattoPoints::points(degree);
         Point<dim>                centre;
         for (unsigned int d = 0; d < dim; ++d)
           {
@@ -121,19 +121,31 @@ namespace rupture
 
 
     template <int dim>
+    void
+    VolumeOutput<dim>::Settings::parse_parameters(ParameterHandler &prm)
+    {
+      cells_per_piece          = prm.get_integer("Cells per output piece");
+      const std::string choice = prm.get("Compression");
+      compression              = (choice == "none") ? Compression::none :
+                                 (choice == "all")  ? Compression::all :
+                                                      Compression::mesh;
+      fields = dealii::Utilities::split_string_list(prm.get("Volume fields"));
+    }
+
+
+
+    template <int dim>
     VolumeOutput<dim>::VolumeOutput(Directory                        &directory,
                                     const Material::ElasticMaterials &materials,
-                                    const std::vector<std::string>   &fields,
-                                    const Compression  compression,
-                                    const unsigned int cells_per_piece,
-                                    const MPI_Comm     communicator)
+                                    const Settings                   &settings,
+                                    const MPI_Comm communicator)
       : directory(directory)
       , materials(materials)
-      , compression(compression)
-      , cells_per_piece(cells_per_piece)
+      , compression(settings.compression)
+      , cells_per_piece(settings.cells_per_piece)
       , communicator(communicator)
     {
-      for (const auto &f : fields)
+      for (const auto &f : settings.fields)
         {
           const auto at = std::find(field_names.begin(), field_names.end(), f);
           AssertThrow(at != field_names.end(),

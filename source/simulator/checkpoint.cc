@@ -305,7 +305,7 @@ namespace rupture
         energy.save(records);
         newton.save(records);
         output_schedule.save(records);
-        records["output/peak slip rate"] = peak_slip_rate;
+        records["output/peak slip rate"] = outcome.peak_slip_rate;
         integrator->save(records);
         BinaryIO::write(out, records);
         statistics.save(out);
@@ -400,7 +400,7 @@ namespace rupture
     energy.load(records);
     newton.load(records);
     output_schedule.load(records);
-    peak_slip_rate = record("output/peak slip rate");
+    outcome.peak_slip_rate = record("output/peak slip rate");
 
     statistics.load(in);
     volume_output->load(in);

@@ -422,16 +422,7 @@ namespace rupture
 
     prm.enter_subsection("Output");
     output_schedule.interval = prm.get_double("Output interval");
-    cells_per_output_piece   = prm.get_integer("Cells per output piece");
-    {
-      using C = typename Output::VolumeOutput<dim>::Compression;
-      const std::string choice = prm.get("Compression");
-      output_compression       = (choice == "none") ? C::none :
-                                 (choice == "all")  ? C::all :
-                                                      C::mesh;
-    }
-    volume_fields =
-      dealii::Utilities::split_string_list(prm.get("Volume fields"));
+    volume_settings.parse_parameters(prm);
     output_schedule.screen_interval = prm.get_integer("Screen output interval");
     receivers = std::make_unique<Output::Receivers<dim>>(prm.get("Receivers"),
                                                          communicator);

@@ -38,7 +38,6 @@ namespace rupture
     , discretization(communicator)
     , has_absorbing(false)
     , stable_time_step(0)
-    , wall_time_start(0)
   {
     services                      = std::make_unique<Services>(*this);
     this->checkpoints.resume      = resume;
@@ -161,13 +160,8 @@ namespace rupture
       pcout << "   Output directory: " << output_directory->absolute_name()
             << std::endl;
     output_prepared = true;
-    volume_output =
-      std::make_unique<Output::VolumeOutput<dim>>(*output_directory,
-                                                  materials,
-                                                  volume_fields,
-                                                  output_compression,
-                                                  cells_per_output_piece,
-                                                  communicator);
+    volume_output   = std::make_unique<Output::VolumeOutput<dim>>(
+      *output_directory, materials, volume_settings, communicator);
   }
 
 
@@ -221,8 +215,8 @@ namespace rupture
   void
   Simulator<dim>::run_sequence()
   {
-    wall_time_start        = MPI_Wtime();
-    checkpoints.last_write = wall_time_start;
+    cost.wall_time_start   = MPI_Wtime();
+    checkpoints.last_write = cost.wall_time_start;
     if (checkpoints.resume)
       run_continued();
     else
@@ -384,7 +378,7 @@ namespace rupture
                 stop_when_weakening,
                 steps_done);
     // (A wall-clock limit may end the run in its loading phase.)
-    if (end_reason == Termination::Reason::end_time)
+    if (outcome.reason == Termination::Reason::end_time)
       {
         start_dynamic_phase_after_loading();
         run_phase(time_parameters.end_time, false);
@@ -516,9 +510,10 @@ namespace rupture
         print_performance_summary();
         timer.print_summary();
       }
-    write_summary(end_reason == Termination::Reason::end_time ? "finished" :
-                                                                "ended early",
-                  end_message);
+    write_summary(outcome.reason == Termination::Reason::end_time ?
+                    "finished" :
+                    "ended early",
+                  outcome.message);
     if (!test_mode)
       pcout << "Results are in " << output_directory->absolute_name()
             << std::endl;
@@ -562,7 +557,7 @@ namespace rupture
       {
         seconds += MPI_Wtime() - start;
       }
-    } loop_timer{time_loop_seconds, loop_start};
+    } loop_timer{cost.time_loop_seconds, loop_start};
 
     for (unsigned int i = steps_done + 1; i <= n_steps; ++i)
       {
@@ -574,9 +569,10 @@ namespace rupture
           fault->set_time(state.time);
 
         integrator->step();
-        dof_steps += discretization.dof_handler().n_dofs();
-        peak_dofs =
-          std::max(peak_dofs, double(discretization.dof_handler().n_dofs()));
+        cost.dof_steps += discretization.dof_handler().n_dofs();
+        cost.peak_dofs =
+          std::max(cost.peak_dofs,
+                   double(discretization.dof_handler().n_dofs()));
         check_finite(state.displacement, "displacement");
         // The displacement may still be finite when the energies computed
         // from it overflow: that is a blow-up too, and no value that is
@@ -598,7 +594,8 @@ namespace rupture
         // Early ends, and the peak slip rate of the watched phase.
         const Termination::Sample sample = termination_sample(row);
         if (!time_parameters.loading_phase || state.clock.in_dynamic_phase)
-          peak_slip_rate = std::max(peak_slip_rate, sample.max_slip_rate);
+          outcome.peak_slip_rate =
+            std::max(outcome.peak_slip_rate, sample.max_slip_rate);
         std::string               message;
         const Termination::Reason reason =
           termination.any() ? termination.check(sample, message) :
@@ -630,7 +627,7 @@ namespace rupture
               }
             if (!test_mode)
               {
-                const double elapsed = MPI_Wtime() - wall_time_start;
+                const double elapsed = MPI_Wtime() - cost.wall_time_start;
                 const double left    = elapsed / state.step * (n_steps - i);
                 pcout << "  [" << std::fixed << std::setprecision(0)
                       << 100. * i / n_steps << "%, " << std::setprecision(1)
@@ -666,8 +663,8 @@ namespace rupture
           write_checkpoint();
         if (ends_early)
           {
-            end_reason  = reason;
-            end_message = message;
+            outcome.reason  = reason;
+            outcome.message = message;
             pcout << "*** The run ends early at t = " << std::setprecision(6)
                   << state.clock.phase_time << " s: " << message << std::endl;
             return false;
@@ -726,17 +723,17 @@ namespace rupture
   std::vector<double>
   Simulator<dim>::statistics_row() const
   {
-    std::vector<double> row = {static_cast<double>(state.step),
-                               state.clock.phase_time,
-                               state.time_step,
-                               static_cast<double>(
-                                 newton.last_linear_iterations),
-                               energy.kinetic,
-                               energy.strain,
-                               energy.external_work,
-                               energy.damping_dissipation,
-                               energy.balance_error(),
-                               test_mode ? 0. : MPI_Wtime() - wall_time_start};
+    std::vector<double> row = {
+      static_cast<double>(state.step),
+      state.clock.phase_time,
+      state.time_step,
+      static_cast<double>(newton.last_linear_iterations),
+      energy.kinetic,
+      energy.strain,
+      energy.external_work,
+      energy.damping_dissipation,
+      energy.balance_error(),
+      test_mode ? 0. : MPI_Wtime() - cost.wall_time_start};
     if (exact_displacement)
       row.push_back(compute_l2_error(state.time));
     // One reduction over the fault for all its columns.

@@ -27,11 +27,11 @@ namespace rupture
     const double peak_sum = dealii::Utilities::MPI::sum(peak, communicator);
     pcout << std::defaultfloat << std::setprecision(4)
           << "   Time loop: " << state.step << " steps of " << n_dofs
-          << " DoFs in " << time_loop_seconds << " s on " << n_ranks
+          << " DoFs in " << cost.time_loop_seconds << " s on " << n_ranks
           << " rank(s): "
           << (state.step > 0 ?
-                1e9 * time_loop_seconds * n_ranks /
-                  (mesh_refinement.enabled() ? dof_steps :
+                1e9 * cost.time_loop_seconds * n_ranks /
+                  (mesh_refinement.enabled() ? cost.dof_steps :
                                                double(n_dofs) * state.step) :
                 0.)
           << " ns per DoF-step per core\n";
@@ -39,19 +39,19 @@ namespace rupture
       pcout << "   Mesh refinement: " << fault_refinement->n_adaptations()
             << " adaptations in " << fault_refinement->seconds()
             << " s (the first before the time loop, the others in it), "
-            << peak_dofs << " DoFs at the peak, " << dof_steps
+            << cost.peak_dofs << " DoFs at the peak, " << cost.dof_steps
             << " DoF-steps\n";
     pcout << "   Peak memory: " << peak_max / 1048576.
           << " MB on the largest rank, " << peak_sum / 1048576.
           << " MB on all ranks, " << peak_sum / double(n_dofs)
           << " B per DoF\n";
-    if (!memory_by_stage.empty())
+    if (!cost.memory_by_stage.empty())
       {
         // Growth of the resident memory over the set-up stages, then up to
         // the peak: where the bytes per DoF go.
         pcout << "   Memory per DoF by stage (resident, all ranks):";
         double previous = 0;
-        for (const auto &[stage, bytes] : memory_by_stage)
+        for (const auto &[stage, bytes] : cost.memory_by_stage)
           {
             pcout << " " << stage << " +"
                   << std::max(bytes - previous, 0.) / double(n_dofs) << " B,";
@@ -70,7 +70,7 @@ namespace rupture
   {
     dealii::Utilities::System::MemoryStats stats;
     dealii::Utilities::System::get_memory_stats(stats);
-    memory_by_stage.emplace_back(
+    cost.memory_by_stage.emplace_back(
       stage, dealii::Utilities::MPI::sum(1024. * stats.VmRSS, communicator));
   }
 
@@ -132,7 +132,7 @@ namespace rupture
     if (termination.uses_wall_clock())
       {
         // Rank 0's clock, so that all ranks stop at the same step.
-        double seconds = MPI_Wtime() - wall_time_start;
+        double seconds = MPI_Wtime() - cost.wall_time_start;
         MPI_Bcast(&seconds, 1, MPI_DOUBLE, 0, communicator);
         s.wall_seconds = seconds;
       }
@@ -155,7 +155,7 @@ namespace rupture
       dealii::Utilities::MPI::n_mpi_processes(communicator);
     std::ostringstream out;
     const std::string  end = (status == "finished" || status == "ended early") ?
-                               Termination::name(end_reason) :
+                               Termination::name(outcome.reason) :
                                status;
     out << "{\n"
         << "  \"status\": " << json_string(status) << ",\n"
@@ -168,15 +168,15 @@ namespace rupture
     if (mesh_refinement.enabled())
       out << "  \"mesh adaptations\": " << fault_refinement->n_adaptations()
           << ",\n"
-          << "  \"peak dofs\": " << json_number(peak_dofs) << ",\n"
-          << "  \"dof-steps\": " << json_number(dof_steps) << ",\n"
+          << "  \"peak dofs\": " << json_number(cost.peak_dofs) << ",\n"
+          << "  \"dof-steps\": " << json_number(cost.dof_steps) << ",\n"
           << "  \"adaptation wall time\": "
           << json_number(test_mode ? 0. : fault_refinement->seconds()) << ",\n";
     out << "  \"time\": " << json_number(state.clock.phase_time) << ",\n"
         << "  \"time since the start of the run\": " << json_number(state.time)
         << ",\n"
         << "  \"wall time\": "
-        << json_number(test_mode ? 0. : MPI_Wtime() - wall_time_start);
+        << json_number(test_mode ? 0. : MPI_Wtime() - cost.wall_time_start);
     if (collective)
       {
         dealii::Utilities::System::MemoryStats stats;
@@ -206,8 +206,8 @@ namespace rupture
                 << ",\n"
                 << "    \"mean slip\": " << json_number(f.mean_slip) << ",\n"
                 << "    \"max slip\": " << json_number(f.max_slip) << ",\n"
-                << "    \"peak slip rate\": " << json_number(peak_slip_rate)
-                << ",\n"
+                << "    \"peak slip rate\": "
+                << json_number(outcome.peak_slip_rate) << ",\n"
                 << "    \"nodes\": " << f.n_nodes << "\n  }";
           }
       }

@@ -223,8 +223,11 @@ namespace
     const std::string          name = "results-" + std::to_string(cycle);
     rupture::Output::Directory directory(name, comm);
     directory.open();
-    Output output(
-      directory, materials, Output::available_fields(), mode, 7, comm);
+    typename Output::Settings settings;
+    settings.fields          = Output::available_fields();
+    settings.compression     = mode;
+    settings.cells_per_piece = 7;
+    Output output(directory, materials, settings, comm);
     output.write(dof_handler, u_ghost, v_ghost, 0.25, cycle);
     MPI_Barrier(comm);
     if (Utilities::MPI::this_mpi_process(comm) != 0)

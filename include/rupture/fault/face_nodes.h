@@ -56,16 +56,6 @@ namespace rupture
       std::vector<double>
       weights(const unsigned int degree, const std::array<double, dim - 1> &xi);
 
-      /// The Gauss-Lobatto points of degree @p degree on [0, 1] (the 1-D
-      /// node coordinates of FE_Q of that degree).
-      std::vector<double>
-      points_1d(const unsigned int degree);
-
-      /// The index (0..p) of the Gauss-Lobatto point of degree @p degree
-      /// nearest to the 1-D coordinate @p xi.
-      unsigned int
-      nearest_point(const unsigned int degree, const double xi);
-
       /**
        * The sub-cells of a face of degree @p degree, each as node numbers
        * in VTK order (segments in 2-D, quadrilaterals in 3-D).

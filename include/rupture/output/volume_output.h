@@ -6,6 +6,7 @@
 #include <rupture/output/vtu_file.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -67,16 +68,27 @@ namespace rupture
         all
       };
 
-      /**
-       * Each rank writes its cells in pieces of at most
-       * @p cells_per_piece cells (one .vtu file each, all listed in the
-       * step's .pvtu), so that the memory of a snapshot stays bounded.
-       */
+      /// What the snapshots hold and how they are written (<Output>).
+      struct Settings
+      {
+        /// The fields written (names of available_fields()).
+        std::vector<std::string> fields;
+        Compression              compression = Compression::mesh;
+        /// Each rank writes its cells in pieces of at most this many cells
+        /// (one .vtu file each, all listed in the step's .pvtu), so that
+        /// the memory of a snapshot stays bounded.
+        unsigned int cells_per_piece = 0;
+
+        /// Read <Volume fields>, <Compression> and <Cells per output
+        /// piece> (the caller has entered <Output>).
+        void
+        parse_parameters(ParameterHandler &prm);
+      };
+
+      /// The field names of @p settings are checked here.
       VolumeOutput(Directory                        &directory,
                    const Material::ElasticMaterials &materials,
-                   const std::vector<std::string>   &fields,
-                   const Compression                 compression,
-                   const unsigned int                cells_per_piece,
+                   const Settings                   &settings,
                    const MPI_Comm                    communicator);
 
       ~VolumeOutput();

@@ -15,6 +15,7 @@
 #include <rupture/output/log.h>
 #include <rupture/output/output_schedule.h>
 #include <rupture/output/receivers.h>
+#include <rupture/output/run_cost.h>
 #include <rupture/output/statistics.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/scene/boundary_conditions.h>
@@ -494,10 +495,9 @@ namespace rupture
     /// Those cells and their stiffness (null without the zone).
     std::unique_ptr<Operators::FaultZoneDamping<dim>> fault_zone;
     double                                            gravity;
-    unsigned int                                      cells_per_output_piece;
-    std::vector<std::string>                          volume_fields;
-    typename Output::VolumeOutput<dim>::Compression   output_compression;
-    TimeIntegration::Parameters                       time_parameters;
+    /// <Output>'s entries of the volume snapshots.
+    typename Output::VolumeOutput<dim>::Settings volume_settings;
+    TimeIntegration::Parameters                  time_parameters;
     /// The time integrator of the phase being run.
     std::unique_ptr<TimeIntegration::Interface<dim>> integrator;
     /// Its scheme.
@@ -555,9 +555,7 @@ namespace rupture
     /// Early ends (the Termination subsection), why the run ended and the
     /// largest slip rate of the dynamic phase, for summary.json.
     Termination::Criteria termination;
-    Termination::Reason   end_reason = Termination::Reason::end_time;
-    std::string           end_message;
-    double                peak_slip_rate = 0;
+    Termination::Outcome  outcome;
     /// The sample of the criteria after the current step (collective when
     /// the wall clock is watched).
     Termination::Sample
@@ -579,11 +577,8 @@ namespace rupture
     /// Newton's controls and what it reports.
     Solver::NewtonParameters newton_parameters;
     Solver::NewtonStatus     newton;
-    double                   wall_time_start;
-    /// Wall time spent in the time loops (s), and their number of steps.
-    double time_loop_seconds = 0;
-    /// Resident memory (bytes, all ranks) after each set-up stage.
-    std::vector<std::pair<std::string, double>> memory_by_stage;
+    /// Wall times, DoF-steps and memory of the run so far.
+    Output::RunCost cost;
     /// When volume, fault surface, screen and tables are written.
     Output::OutputSchedule output_schedule;
     /// The largest diagonal entry of the effective system (without the
@@ -602,9 +597,6 @@ namespace rupture
     /// coarsens, and how many adaptations it made (with <Mesh refinement>
     /// only).
     std::unique_ptr<Adaptivity::FaultRefinement<dim>> fault_refinement;
-    /// The DoFs summed over the steps this process ran, and their peak.
-    double dof_steps = 0;
-    double peak_dofs = 0;
   };
 } // namespace rupture
 

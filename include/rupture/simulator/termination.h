@@ -32,6 +32,15 @@ namespace rupture
     std::string
     name(const Reason reason);
 
+    /// How a run ended, for its summary.json: the reason, the message of
+    /// an early end, and the largest slip rate of the dynamic phase.
+    struct Outcome
+    {
+      Reason      reason = Reason::end_time;
+      std::string message;
+      double      peak_slip_rate = 0;
+    };
+
     /**
      * What the criteria look at after a step. Every value is the same on
      * all ranks (the fault's statistics are reduced over them, and the
