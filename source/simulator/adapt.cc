@@ -101,7 +101,7 @@ namespace rupture
         // balance with the forces (M a = f - K u - C v - contact), which
         // the interpolated one is not on the new mesh.
         VectorType load(discretization.locally_owned_dofs(), communicator);
-        assemble_load_vector(state.time, load);
+        elastic_system.assemble_load(state.time, load);
         energy.contact_force = 0;
         fault->add_contact_force(discretization.hanging_constraints(),
                                  energy.contact_force);
@@ -113,12 +113,12 @@ namespace rupture
     // The energy the interpolation added, counted apart so that the
     // budget stays closed.
     VectorType product(discretization.locally_owned_dofs(), communicator);
-    apply_stiffness(state.displacement, product);
+    elastic_system.apply_stiffness(state.displacement, product);
     discretization.hanging_constraints().set_zero(product);
     energy.strain = 0.5 * (state.displacement * product);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
-        apply_mass(state.velocity, product);
+        elastic_system.apply_mass(state.velocity, product);
         discretization.hanging_constraints().set_zero(product);
         energy.kinetic = 0.5 * (state.velocity * product);
       }

@@ -210,7 +210,7 @@ namespace rupture
                                         &energy.applied_force,
                                         &energy.damping_force,
                                         &energy.contact_force};
-    if (has_absorbing)
+    if (elastic_system.has_absorbing())
       fields.push_back(&energy.absorbing_force);
     return fields;
   }

@@ -1,6 +1,7 @@
 // Newton's method for implicit Newmark and quasi-static steps with a penalty
 // fault (the step cuts are TimeIntegration::ImplicitNewmark's).
 
+#include <rupture/operators/multigrid.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/dofs/dof_tools.h>
@@ -73,7 +74,7 @@ namespace rupture
                     discretization.hanging_constraints(),
                     force,
                     discretization.increment_constraints(),
-                    with_tangent ? &system_matrix : nullptr,
+                    with_tangent ? &elastic_system.effective_matrix() : nullptr,
                     sign);
   }
 
@@ -154,7 +155,7 @@ namespace rupture
               {
                 // The force scale of the step: the residual may start tiny
                 // (a body near equilibrium), so the internal forces count.
-                apply_stiffness(old_u, scratch);
+                elastic_system.apply_stiffness(old_u, scratch);
                 discretization.increment_constraints().set_zero(scratch);
                 // A prestressed fault at rest: the forces of its initial
                 // traction.
@@ -163,7 +164,8 @@ namespace rupture
                                       fault->initial_force_norm(),
                                       1e-300});
                 displacement_scale =
-                  reference / std::max(max_system_diagonal, 1e-300);
+                  reference /
+                  std::max(elastic_system.max_effective_diagonal(), 1e-300);
               }
             else
               {
@@ -248,13 +250,14 @@ namespace rupture
                         << " open fault nodes. ";
                 // The effective stiffness without the contact (the matrix
                 // has it added for each solve only).
-                VectorType diagonal(system_diagonal);
+                VectorType diagonal(elastic_system.effective_diagonal());
                 if (!linear_solver.matrix_free())
                   {
                     diagonal.reinit(discretization.locally_owned_dofs(),
                                     communicator);
                     for (const auto i : discretization.locally_owned_dofs())
-                      diagonal(i) = system_matrix.diag_element(i);
+                      diagonal(i) =
+                        elastic_system.effective_matrix().diag_element(i);
                     diagonal.compress(VectorOperation::insert);
                   }
                 const unsigned int n_steep =
@@ -307,8 +310,8 @@ namespace rupture
                 !linear_solver.keeps_own_matrix())
               {
                 TimerOutput::Scope t(timer, "Preconditioner set-up");
-                linear_solver.initialize(system_matrix,
-                                         null_space,
+                linear_solver.initialize(elastic_system.effective_matrix(),
+                                         elastic_system.near_null_space(),
                                          false,
                                          discretization.degree() > 1);
                 newton.preconditioner_signature = signature;
@@ -328,7 +331,7 @@ namespace rupture
                               // lead Newton astray at contact (the 10 km
                               // Northeast-Japan loading: no convergence
                               // at 0.1, 6 iterations at 1e-3).
-                              use_multigrid_now() ?
+                              elastic_system.use_multigrid_now() ?
                                 std::min(newton_parameters.forcing, 1e-3) :
                                 newton_parameters.forcing,
                               eta) :
@@ -341,11 +344,11 @@ namespace rupture
             {
               // The contact tangent is that of the pairs' trial states, from
               // the last residual.
-              if (use_multigrid_now())
+              if (elastic_system.use_multigrid_now())
                 {
-                  TimerOutput::Scope   t(timer, "Multigrid set-up");
-                  const SystemFactors &c = system_factors;
-                  multigrid->set_operator(
+                  TimerOutput::Scope t(timer, "Multigrid set-up");
+                  const auto        &c = elastic_system.effective_factors();
+                  elastic_system.multigrid_preconditioner()->set_operator(
                     c.stiffness,
                     c.mass,
                     fault ?
@@ -357,15 +360,16 @@ namespace rupture
               else if (fault)
                 {
                   TimerOutput::Scope t(timer, "Block Jacobi");
-                  fault->prepare_pair_preconditioner(system_diagonal,
-                                                     free_dofs);
+                  fault->prepare_pair_preconditioner(
+                    elastic_system.effective_diagonal(),
+                    elastic_system.free_dof_mask());
                 }
               linear_iterations = linear_solver.solve(
                 [this](const VectorType &x, VectorType &y) {
-                  apply_system(x, y);
+                  elastic_system.apply_system(x, y);
                 },
                 [this](const VectorType &r, VectorType &z) {
-                  precondition_system(r, z);
+                  elastic_system.precondition_system(r, z);
                 },
                 !fault || stuck,
                 increment,
@@ -374,7 +378,9 @@ namespace rupture
             }
           else
             linear_iterations =
-              linear_solver.solve(system_matrix, increment, free_residual);
+              linear_solver.solve(elastic_system.effective_matrix(),
+                                  increment,
+                                  free_residual);
           newton.last_linear_iterations += linear_iterations;
           {
             const unsigned int p =

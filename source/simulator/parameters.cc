@@ -383,23 +383,8 @@ namespace rupture
 
     prm.enter_subsection("Discretization");
     discretization.parse_parameters(prm);
-    use_lumped_mass       = (prm.get("Mass matrix") == "lumped");
-    stiffness_matrix_free = (prm.get("Stiffness operator") == "matrix free");
     prm.leave_subsection();
-
-    prm.enter_subsection("Damping");
-    rayleigh_alpha      = prm.get_double("Rayleigh alpha");
-    rayleigh_beta       = prm.get_double("Rayleigh beta");
-    fault_zone_fraction = prm.get_double("Fault zone damping");
-    prm.leave_subsection();
-
-    prm.enter_subsection("Loads");
-    gravity        = prm.get_double("Gravity");
-    has_body_force = !dealii::Utilities::trim(prm.get("Body force")).empty();
-    body_force     = Utilities::parse_function<dim>(prm.get("Body force"),
-                                                dim,
-                                                "Loads/Body force");
-    prm.leave_subsection();
+    elastic_system.parse_parameters(prm, test_mode);
 
     prm.enter_subsection("Initial conditions");
     initial_displacement =
@@ -449,7 +434,7 @@ namespace rupture
     time_parameters.parse_parameters(prm);
     if (time_parameters.scheme ==
         TimeIntegration::Scheme::explicit_central_difference)
-      use_lumped_mass = true;
+      elastic_system.use_lumped_mass_always();
     materials.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
     // deal.II 9.4's coarsening sequence fails on locally refined meshes.
@@ -472,6 +457,7 @@ namespace rupture
           fault_output->surface_interval(output_schedule.interval);
       }
     discretization.set_fault(fault.get());
+    elastic_system.set_fault(fault.get());
     termination.parse_parameters(prm, fault != nullptr);
     prm.enter_subsection("Checkpoint");
     checkpoints.interval = prm.get_integer("Interval");
@@ -576,9 +562,9 @@ namespace rupture
           discretization.degree());
       }
     boundary_conditions.parse_parameters(prm, scene->get_boundary_names());
-    has_absorbing = !boundary_conditions.absorbing.empty();
-    AssertThrow(!(has_absorbing && time_parameters.scheme ==
-                                     TimeIntegration::Scheme::quasi_static),
+    AssertThrow(!(elastic_system.has_absorbing() &&
+                  time_parameters.scheme ==
+                    TimeIntegration::Scheme::quasi_static),
                 ExcMessage("<Boundary conditions/Absorbing> is set, but "
                            "absorbing boundaries act on velocities and have "
                            "no meaning in a quasi-static run. Remove them "

@@ -171,7 +171,7 @@ namespace rupture
     using Scheme            = TimeIntegration::Scheme;
     const bool quasi_static = current_scheme() == Scheme::quasi_static;
     VectorType load(discretization.locally_owned_dofs(), communicator);
-    assemble_load_vector(state.time, load);
+    elastic_system.assemble_load(state.time, load);
     // The fault's force of its carried tractions: a new return mapping
     // would change the pairs' trial states, from which the loading phase
     // tells whether friction weakens.
@@ -180,16 +180,16 @@ namespace rupture
       fault->add_contact_force(discretization.hanging_constraints(),
                                energy.contact_force);
     VectorType ku(load), ma(load);
-    apply_stiffness(state.displacement, ku);
-    compute_damping_force(state.velocity, energy.damping_force);
+    elastic_system.apply_stiffness(state.displacement, ku);
+    elastic_system.damping_force(state.velocity, energy.damping_force);
     ma = 0;
     if (!quasi_static)
-      apply_mass(state.acceleration, ma);
+      elastic_system.apply_mass(state.acceleration, ma);
     set_applied_force(load, ku, ma);
-    if (has_absorbing)
+    if (elastic_system.has_absorbing())
       {
         energy.absorbing_force.reinit(load);
-        compute_absorbing_force(state.velocity, energy.absorbing_force);
+        elastic_system.absorbing_force(state.velocity, energy.absorbing_force);
       }
   }
 

@@ -2,6 +2,7 @@
 #include <rupture/base/interruption.h>
 #include <rupture/base/time_units.h>
 #include <rupture/base/utilities.h>
+#include <rupture/operators/multigrid.h>
 #include <rupture/output/statistics_columns.h>
 #include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
@@ -35,8 +36,16 @@ namespace rupture
     , pcout(log.stream(),
             dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , elastic_system(discretization,
+                     materials,
+                     boundary_conditions,
+                     time_parameters,
+                     state,
+                     linear_solver,
+                     timer,
+                     pcout,
+                     communicator)
     , discretization(communicator)
-    , has_absorbing(false)
     , stable_time_step(0)
   {
     services                      = std::make_unique<Services>(*this);
@@ -93,12 +102,12 @@ namespace rupture
     assemble_physics_matrices();
     record_memory("operators");
     // A body force or initial conditions that are not finite at t = 0 are
-    // input errors too (assemble_load_vector() and
+    // input errors too (Elasticity::System::assemble_load() and
     // interpolate_initial_conditions() name the entry and the place).
-    if (has_body_force)
+    if (elastic_system.has_body_force())
       {
         VectorType load(discretization.locally_owned_dofs(), communicator);
-        assemble_load_vector(0, load);
+        elastic_system.assemble_load(0, load);
       }
     interpolate_initial_conditions();
     // The dynamic phase after a loading phase is prepared only when the
@@ -313,7 +322,7 @@ namespace rupture
         columns.push_back(c);
     // Last, so that the columns before keep their numbers for scripts that
     // read them by position (the program reads them by name).
-    if (has_absorbing)
+    if (elastic_system.has_absorbing())
       columns.emplace_back("Energy absorbed at the absorbing boundaries (J): "
                            "part of the dissipated energy");
     // A mesh that changes (<Mesh refinement>), after all others.
@@ -418,11 +427,12 @@ namespace rupture
         state.velocity = 0;
         discretization.set_kinematic_velocity(state.velocity, state.time);
         VectorType load(discretization.locally_owned_dofs(), communicator);
-        assemble_load_vector(state.time, load);
+        elastic_system.assemble_load(state.time, load);
         compute_acceleration(load);
-        compute_damping_force(state.velocity, energy.damping_force);
-        if (has_absorbing)
-          compute_absorbing_force(state.velocity, energy.absorbing_force);
+        elastic_system.damping_force(state.velocity, energy.damping_force);
+        if (elastic_system.has_absorbing())
+          elastic_system.absorbing_force(state.velocity,
+                                         energy.absorbing_force);
       }
     // The first snapshots of the dynamic phase's time series: its
     // initial state, at its time 0.
@@ -485,7 +495,7 @@ namespace rupture
     pcout << "   Energy balance error below " << tolerance
           << " of the energy scale: "
           << (std::abs(balance) < tolerance * scale ? "yes" : "no") << "\n";
-    if (multigrid)
+    if (elastic_system.multigrid_preconditioner())
       {
         // What multigrid is for: iteration counts that stay bounded.
         pcout << "   Krylov iterations per linear solve:";
@@ -502,7 +512,8 @@ namespace rupture
                   << ")" << std::defaultfloat;
         pcout << "\n";
         if (!test_mode)
-          pcout << "   Multigrid: " << multigrid->summary() << "\n";
+          pcout << "   Multigrid: "
+                << elastic_system.multigrid_preconditioner()->summary() << "\n";
       }
     if (!test_mode)
       {
@@ -758,7 +769,7 @@ namespace rupture
                                f.mean_shear_traction})
           row.push_back(v);
       }
-    if (has_absorbing)
+    if (elastic_system.has_absorbing())
       row.push_back(energy.absorbed);
     if (mesh_refinement.enabled())
       {

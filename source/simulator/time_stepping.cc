@@ -16,121 +16,6 @@
 
 namespace rupture
 {
-  namespace
-  {
-    /**
-     * The consistent mass matrix restricted to the unconstrained DoFs, with
-     * the identity on constrained ones: to compute initial accelerations.
-     */
-    struct ConstrainedMass
-    {
-      const std::function<void(const TrilinosWrappers::MPI::Vector &,
-                               TrilinosWrappers::MPI::Vector &)>
-                                       mass;
-      const AffineConstraints<double> &constraints;
-      const IndexSet                  &owned;
-
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        mass(src, dst);
-        for (const auto i : owned)
-          if (constraints.is_constrained(i))
-            dst(i) = src(i);
-        dst.compress(VectorOperation::insert);
-      }
-    };
-
-    struct DiagonalPreconditioner
-    {
-      TrilinosWrappers::MPI::Vector inverse;
-
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        dst = src;
-        dst.scale(inverse);
-      }
-    };
-  } // namespace
-
-
-
-  template <int dim>
-  const typename Simulator<dim>::VectorType &
-  Simulator<dim>::current_load(const double time)
-  {
-    if (!has_body_force)
-      return constant_load;
-    if (step_load.size() != constant_load.size())
-      step_load.reinit(constant_load);
-    assemble_load_vector(time, step_load);
-    return step_load;
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::apply_mass(const VectorType &x, VectorType &y) const
-  {
-    if (use_lumped_mass)
-      {
-        y = x;
-        y.scale(lumped_mass);
-      }
-    else if (mass_matrix.m() == 0)
-      apply_elastic(x, y, 0, 1);
-    else
-      mass_matrix.vmult(y, x);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::compute_damping_force(const VectorType &v,
-                                        VectorType       &y) const
-  {
-    y = 0;
-    if (current_scheme() == TimeIntegration::Scheme::quasi_static)
-      return;
-    VectorType tmp(v);
-    if (rayleigh_alpha != 0)
-      {
-        apply_mass(v, tmp);
-        y.add(rayleigh_alpha, tmp);
-      }
-    if (rayleigh_beta != 0)
-      {
-        apply_stiffness(v, tmp);
-        y.add(rayleigh_beta, tmp);
-      }
-    if (fault_zone_viscosity() != 0)
-      fault_zone->vmult_add(fault_zone_viscosity(), v, y);
-    if (has_absorbing)
-      {
-        tmp = v;
-        tmp.scale(absorbing_damping);
-        y += tmp;
-      }
-    // Constrained DoFs have placeholder rows in M and K.
-    discretization.hanging_constraints().set_zero(y);
-  }
-
-
-
-  template <int dim>
-  void
-  Simulator<dim>::compute_absorbing_force(const VectorType &v,
-                                          VectorType       &y) const
-  {
-    y = v;
-    y.scale(absorbing_damping);
-    discretization.hanging_constraints().set_zero(y);
-  }
 
 
 
@@ -229,49 +114,13 @@ namespace rupture
   {
     // M a_0 = f - K u_0 - C v_0 on the free DoFs.
     VectorType r(load), tmp(load);
-    apply_stiffness(state.displacement, tmp);
+    elastic_system.apply_stiffness(state.displacement, tmp);
     r -= tmp;
-    compute_damping_force(state.velocity, tmp);
+    elastic_system.damping_force(state.velocity, tmp);
     r -= tmp;
     r -= energy.contact_force;
     discretization.increment_constraints().set_zero(r);
-    if (use_lumped_mass)
-      {
-        state.acceleration = r;
-        for (const auto i : discretization.locally_owned_dofs())
-          state.acceleration(i) =
-            (lumped_mass(i) > 0 &&
-             !discretization.increment_constraints().is_constrained(i)) ?
-              r(i) / lumped_mass(i) :
-              0.;
-        state.acceleration.compress(VectorOperation::insert);
-      }
-    else if (r.l2_norm() > 0)
-      {
-        ConstrainedMass        op{[this](const VectorType &x, VectorType &y) {
-                             apply_mass(x, y);
-                           },
-                           discretization.increment_constraints(),
-                           discretization.locally_owned_dofs()};
-        DiagonalPreconditioner jacobi;
-        jacobi.inverse.reinit(discretization.locally_owned_dofs(),
-                              communicator);
-        for (const auto i : discretization.locally_owned_dofs())
-          {
-            const double d    = (mass_matrix.m() == 0) ?
-                                  consistent_mass_diagonal(i) :
-                                  mass_matrix.diag_element(i);
-            jacobi.inverse(i) = d > 0 ? 1. / d : 1.;
-          }
-        jacobi.inverse.compress(VectorOperation::insert);
-        SolverControl        control(1000, 1e-14 * r.l2_norm());
-        SolverCG<VectorType> cg(control);
-        state.acceleration = 0;
-        cg.solve(op, state.acceleration, r, jacobi);
-        discretization.distribute_hanging(state.acceleration);
-      }
-    else
-      state.acceleration = 0;
+    elastic_system.solve_mass(r, state.acceleration);
   }
 
 
@@ -353,16 +202,16 @@ namespace rupture
     // The initial fields were interpolated in the constructor
     // (interpolate_initial_conditions()).
     VectorType load(discretization.locally_owned_dofs(), communicator);
-    assemble_load_vector(0, load);
+    elastic_system.assemble_load(0, load);
     energy.contact_force = 0;
     if (fault && fault->uses_split_nodes())
       {
         // The fault traction that the initial state calls for: a prestress
         // above the strength makes the fault slip from the first step.
         VectorType r(load), tmp(load);
-        apply_stiffness(state.displacement, tmp);
+        elastic_system.apply_stiffness(state.displacement, tmp);
         r -= tmp;
-        compute_damping_force(state.velocity, tmp);
+        elastic_system.damping_force(state.velocity, tmp);
         r -= tmp;
         initial_split_node_force(r, energy.contact_force);
       }
@@ -382,12 +231,12 @@ namespace rupture
 
     // Forces and energies of the initial state.
     VectorType ku(load);
-    apply_stiffness(state.displacement, ku);
-    compute_damping_force(state.velocity, energy.damping_force);
+    elastic_system.apply_stiffness(state.displacement, ku);
+    elastic_system.damping_force(state.velocity, energy.damping_force);
     VectorType ma(load);
     ma = 0;
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
-      apply_mass(state.acceleration, ma);
+      elastic_system.apply_mass(state.acceleration, ma);
     // The force the body is in balance with at the start. A quasi-static
     // run follows an equilibrium path, on which the loads grow from the
     // internal force K u_0 to their full value within the first step.
@@ -398,17 +247,17 @@ namespace rupture
     VectorType mv(load);
     if (current_scheme() != TimeIntegration::Scheme::quasi_static)
       {
-        apply_mass(state.velocity, mv);
+        elastic_system.apply_mass(state.velocity, mv);
         discretization.hanging_constraints().set_zero(mv);
         energy.kinetic = 0.5 * (state.velocity * mv);
       }
     energy.external_work       = 0;
     energy.damping_dissipation = 0;
     energy.absorbed            = 0;
-    if (has_absorbing)
+    if (elastic_system.has_absorbing())
       {
         energy.absorbing_force.reinit(load);
-        compute_absorbing_force(state.velocity, energy.absorbing_force);
+        elastic_system.absorbing_force(state.velocity, energy.absorbing_force);
       }
     energy.initial = energy.kinetic + energy.strain;
   }
@@ -425,9 +274,9 @@ namespace rupture
     // compute_acceleration()).
     VectorType inverse(residual);
     for (const auto i : discretization.locally_owned_dofs())
-      inverse(i) = (lumped_mass(i) > 0 &&
+      inverse(i) = (elastic_system.lumped_mass()(i) > 0 &&
                     !discretization.increment_constraints().is_constrained(i)) ?
-                     1. / lumped_mass(i) :
+                     1. / elastic_system.lumped_mass()(i) :
                      0.;
     inverse.compress(VectorOperation::insert);
     fault->assemble_split_node(state.displacement,

@@ -4,13 +4,11 @@
 #include <rupture/adaptivity/parameters.h>
 #include <rupture/base/ghosted_vectors.h>
 #include <rupture/discretization/discretization.h>
+#include <rupture/elasticity/system.h>
 #include <rupture/fault/fault.h>
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
-#include <rupture/operators/elastic_operator.h>
 #include <rupture/operators/element_frequency.h>
-#include <rupture/operators/fault_zone_damping.h>
-#include <rupture/operators/multigrid.h>
 #include <rupture/output/directory.h>
 #include <rupture/output/log.h>
 #include <rupture/output/output_schedule.h>
@@ -35,11 +33,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/hp/fe_collection.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
@@ -73,24 +67,24 @@ namespace rupture
   } // namespace TimeIntegration
 
   /**
-   * Owns the distributed mesh, the displacement field and the state of a
-   * run, and drives the time loop. Physics (materials, scene, boundary
-   * conditions), the time integration constants, the linear solver and the
-   * output each live in their own room; this class wires them together.
-   *
-   * The displacement is an hp-field with one FESystem per side of a fault:
-   * without a fault there is one side and the field is plain FE_Q^dim.
-   * Component c of side s is stored as component s*dim + c, so the fault
-   * can later give each side its own nodes without a change here.
+   * Drives a run: reads the parameters, builds the discretization
+   * (Discretization::Discretization: mesh, DoFs, constraints) and the
+   * elastic system on it (Elasticity::System), holds the state of the run
+   * and steps it through its phases with the time integrators; writes the
+   * outputs and checkpoints, and carries the state to a new mesh when the
+   * mesh adapts. Physics (materials, scene, boundary conditions, fault,
+   * friction), the time integration and the linear solver each live in their
+   * own room; this class wires them together.
    *
    * The work is split over several files, as in ASPECT: simulator.cc (set
-   * up and time loop), assembly.cc (matrices and load vectors),
-   * time_stepping.cc (initial state and energies, forces) and
-   * newton.cc (the nonlinear solve of a step). The time integrators
-   * (TimeIntegration::Interface, one class per scheme) step the state
-   * through the contracts of their TimeIntegration::Context (the elastic
-   * system, the nonlinear solve, the constraints), which Services
-   * implements with this class's members.
+   * up and time loop), setup.cc (the DoFs and what depends on them),
+   * assembly.cc (the phases: time step and integrator), time_stepping.cc
+   * (initial state and energies), newton.cc (the nonlinear solve of a
+   * step), refine.cc and adapt.cc (a new mesh during the run). The time
+   * integrators (TimeIntegration::Interface, one class per scheme) step the
+   * state through the contracts of their TimeIntegration::Context: the
+   * elastic system, the discretization's constraints, and the nonlinear
+   * solve, which Services implements with this class's members.
    */
   template <int dim>
   class Simulator
@@ -196,16 +190,17 @@ namespace rupture
     /// error. Runs before the output directory is touched.
     void
     interpolate_initial_conditions();
+    /// The DoFs of the current mesh, the elastic system's operators on them,
+    /// the state's vectors and the outputs (again after each change of the
+    /// mesh).
     void
     setup_dofs();
     void
     prepare_output_directory(ParameterHandler &prm);
-    std::vector<std::vector<double>>
-    rigid_body_modes() const;
 
-    // --- assembly (assembly.cc) ---
-    /// The operators of the mesh; with @p prepare_first_phase, the first
-    /// phase's time step and integrator too.
+    // --- phases (assembly.cc) ---
+    /// Assemble the elastic system of the mesh; with @p prepare_first_phase,
+    /// the first phase's time step and integrator too.
     void
     assemble_physics_matrices(const bool prepare_first_phase = true);
     /**
@@ -289,61 +284,12 @@ namespace rupture
     void
     read_checkpoint();
     /**
-     * Set the effective stiffness stiffness_factor K + mass_factor M +
-     * absorbing_factor C_absorbing of the coming steps (Rayleigh damping
-     * folded into the first two factors): assemble it and build its
-     * preconditioner, or, with the matrix-free solver, only its diagonal.
-     */
-    void
-    assemble_system_matrix(const double stiffness_factor,
-                           const double mass_factor,
-                           const double absorbing_factor);
-    /**
-     * y = A x for the effective stiffness A of assemble_system_matrix()
-     * plus the fault's contact tangent of its last assemble(), matrix-free,
-     * with the identity in the rows of DoFs that increment_constraints
-     * constrains (x is read as zero there otherwise).
-     */
-    void
-    apply_system(const VectorType &x, VectorType &y) const;
-    /**
-     * z = P^-1 r for the block-Jacobi preconditioner of apply_system().
-     */
-    void
-    precondition_system(const VectorType &r, VectorType &z) const;
-    /**
-     * K x with the matrix-free operator, left in its destination vector:
-     * the owned entries, valid until its next product. nullptr without a
-     * matrix-free operator.
-     */
-    const double *
-    apply_stiffness_in_place(const VectorType &x) const;
-    /**
      * A ghosted copy of @p v in slot @p slot (0 or 1), valid until the
      * slot's next use. Two slots: the volume output needs displacement and
      * velocity together.
      */
     const VectorType &
     ghosted_copy(const unsigned int slot, const VectorType &v) const;
-    /**
-     * stiffness_factor K x + mass_factor M x, left in the operator's
-     * destination vector (the owned entries, valid until its next product).
-     */
-    const double *
-    apply_elastic_in_place(const VectorType &x,
-                           const double      stiffness_factor,
-                           const double      mass_factor) const;
-    /**
-     * y = stiffness_factor K x + mass_factor M x with the matrix-free
-     * operator (M the consistent mass).
-     */
-    void
-    apply_elastic(const VectorType &x,
-                  VectorType       &y,
-                  const double      stiffness_factor,
-                  const double      mass_factor) const;
-    void
-    assemble_load_vector(const double time, VectorType &load) const;
     /// The explicit scheme's highest element frequency, remembered by
     /// cell shape across meshes.
     Operators::ElementFrequencies<dim> element_frequencies;
@@ -354,10 +300,6 @@ namespace rupture
     void
     initialize_state();
     using NewtonFailure = Solver::NewtonFailure;
-    /// The load vector at @p time: the constant part, plus the body force
-    /// if there is one.
-    const VectorType &
-    current_load(const double time);
     /**
      * Solve for the displacement at the new time: one linear solve without
      * a fault, Newton's method (the paper's Fig. 6) with one. @p update_rates
@@ -388,50 +330,6 @@ namespace rupture
      */
     void
     initial_split_node_force(const VectorType &residual, VectorType &force);
-    void
-    apply_mass(const VectorType &x, VectorType &y) const;
-    /// y = K x, with the stored matrix or matrix-free.
-    void
-    apply_stiffness(const VectorType &x, VectorType &y) const;
-    /// Set up the matrix-free stiffness operator and its vectors.
-    void
-    setup_matrix_free_stiffness();
-    /// Mark the cells of <Damping/Fault zone damping> and assemble their
-    /// stiffness (nothing without a fault or with the fraction 0).
-    void
-    setup_fault_zone_damping();
-    /// The Kelvin-Voigt coefficient eta (s) of the fault zone now: the
-    /// fraction times the current time step (0 without the zone).
-    double
-    fault_zone_viscosity() const;
-    /// Build the levels of the multigrid preconditioner for the mesh.
-    void
-    setup_multigrid();
-    /// Whether the solves of the current step use the multigrid
-    /// preconditioner (quasi-static steps always, dynamic ones if
-    /// <Solver/Multigrid in dynamic steps>), or block Jacobi.
-    bool
-    use_multigrid_now() const;
-    /// Call @p action with the DoF indices, the stiffness matrix and (if
-    /// @p with_mass) the consistent mass matrix of each locally owned cell.
-    /// Cells for which @p selected is false are skipped (none if it is
-    /// empty).
-    void
-    for_each_cell_matrix(
-      const bool with_mass,
-      const std::function<
-        void(const typename DoFHandler<dim>::active_cell_iterator &,
-             const std::vector<types::global_dof_index> &,
-             FullMatrix<double> &,
-             const FullMatrix<double> &)>                        &action,
-      const std::function<bool(
-        const typename DoFHandler<dim>::active_cell_iterator &)> &selected = {})
-      const;
-    void
-    compute_damping_force(const VectorType &velocity, VectorType &y) const;
-    /// The force of the absorbing boundaries' dashpots alone, at @p velocity.
-    void
-    compute_absorbing_force(const VectorType &velocity, VectorType &y) const;
     void
     check_finite(const VectorType  &v,
                  const std::string &what,
@@ -478,23 +376,9 @@ namespace rupture
     /// The output directory: its lock, manifest and atomic files.
     std::unique_ptr<Output::Directory> output_directory;
     bool                               test_mode;
-    bool                               use_lumped_mass;
-    bool                               stiffness_matrix_free = true;
-    /// The matrix-free stiffness operator, if used, and the vectors that
-    /// carry its argument and result.
-    std::unique_ptr<Operators::ElasticOperator<dim>> elastic_operator;
-    /// The geometric multigrid preconditioner (<Solver/Preconditioner> =
-    /// multigrid).
-    std::unique_ptr<Operators::Multigrid<dim>>         multigrid;
-    mutable LinearAlgebra::distributed::Vector<double> operator_src;
-    mutable LinearAlgebra::distributed::Vector<double> operator_dst;
-    double                                             rayleigh_alpha;
-    double                                             rayleigh_beta;
-    /// <Damping/Fault zone damping>: eta / dt of the cells at the fault.
-    double fault_zone_fraction = 0;
-    /// Those cells and their stiffness (null without the zone).
-    std::unique_ptr<Operators::FaultZoneDamping<dim>> fault_zone;
-    double                                            gravity;
+    /// The elastic body on the discretization: its operators, matrices,
+    /// loads and the preconditioners of its effective stiffness.
+    Elasticity::System<dim> elastic_system;
     /// <Output>'s entries of the volume snapshots.
     typename Output::VolumeOutput<dim>::Settings volume_settings;
     TimeIntegration::Parameters                  time_parameters;
@@ -506,8 +390,6 @@ namespace rupture
     {
       return integrator->scheme();
     }
-    std::unique_ptr<FunctionParser<dim>> body_force;
-    bool                                 has_body_force;
     std::unique_ptr<FunctionParser<dim>> initial_displacement;
     std::unique_ptr<FunctionParser<dim>> initial_velocity;
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
@@ -523,31 +405,6 @@ namespace rupture
 
     /// The mesh, the elements, the DoFs and their constraints.
     Discretization::Discretization<dim> discretization;
-
-    // Operators. Only what the scheme needs is built.
-    TrilinosWrappers::SparseMatrix   stiffness_matrix;
-    TrilinosWrappers::SparseMatrix   mass_matrix;
-    TrilinosWrappers::SparseMatrix   system_matrix;
-    std::vector<std::vector<double>> null_space;
-    VectorType                       lumped_mass;
-    VectorType                       absorbing_damping;
-    /// The factors of the effective stiffness of assemble_system_matrix().
-    struct SystemFactors
-    {
-      double stiffness = 1, mass = 0, absorbing = 0;
-    } system_factors;
-    /// Without a stored system matrix (Solver::LinearSolver::matrix_free()):
-    /// the diagonals of K and of the consistent M, that of the effective
-    /// stiffness, and 1 at free DoFs, 0 at those increment_constraints
-    /// constrains.
-    VectorType stiffness_diagonal, consistent_mass_diagonal, system_diagonal,
-      free_dofs;
-    /// Work vector of apply_system().
-    mutable VectorType system_work;
-    /// The load of the step if it varies (current_load()).
-    VectorType step_load;
-    VectorType constant_load;
-    bool       has_absorbing;
 
     /// Displacement, velocity, acceleration, time, step, its number and
     /// the phase clock.
@@ -581,10 +438,6 @@ namespace rupture
     Output::RunCost cost;
     /// When volume, fault surface, screen and tables are written.
     Output::OutputSchedule output_schedule;
-    /// The largest diagonal entry of the effective system (without the
-    /// contact), set where the system is assembled: Newton's displacement
-    /// scale for its round-off floor.
-    double max_system_diagonal = 0;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
     /// Ghosted copies (locally relevant entries) with their exchange
