@@ -93,6 +93,8 @@ namespace rupture
     bool
     Discretization<dim>::flag_fault_alike()
     {
+      if (!fault)
+        return false;
       bool flagged = false;
       for (const auto &cell : mesh.active_cell_iterators())
         if (cell->is_locally_owned())

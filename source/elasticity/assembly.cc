@@ -33,8 +33,8 @@ namespace rupture
     System<dim>::assemble()
     {
       TimerOutput::Scope t(timer, "Assemble matrices");
-      using Scheme        = TimeIntegration::Scheme;
-      const Scheme scheme = time_parameters.scheme;
+      using Scheme            = TimeIntegration::Scheme;
+      const Scheme run_scheme = time_parameters.scheme;
 
       const hp::QCollection<dim> q_cells(
         QGauss<dim>(discretization.degree() + 1));
@@ -46,7 +46,7 @@ namespace rupture
         QGauss<dim - 1>(discretization.degree() + 1));
       // (The matrix-free solver applies the consistent mass through the
       // elastic operator.)
-      const bool need_mass = (scheme == Scheme::implicit_newmark &&
+      const bool need_mass = (run_scheme == Scheme::implicit_newmark &&
                               !use_lumped_mass && !linear_solver.matrix_free());
       // With the matrix-free operator, element stiffness matrices are only
       // computed for a stored mass matrix (the same loop): otherwise the

@@ -151,8 +151,8 @@ namespace rupture
     void
     System<dim>::setup()
     {
-      using Scheme        = TimeIntegration::Scheme;
-      const Scheme scheme = time_parameters.scheme;
+      using Scheme            = TimeIntegration::Scheme;
+      const Scheme run_scheme = time_parameters.scheme;
       // The matrix-free solver applies the system and the consistent mass
       // through the elastic operator instead.
       const bool matrix_free_system = linear_solver.matrix_free();
@@ -163,11 +163,11 @@ namespace rupture
           "matrix and needs <Discretization/Stiffness "
           "operator> = matrix free."));
       const bool needs_system_matrix =
-        (scheme != Scheme::explicit_central_difference ||
+        (run_scheme != Scheme::explicit_central_difference ||
          time_parameters.loading_phase) &&
         !matrix_free_system;
       const bool needs_mass_matrix =
-        (scheme == Scheme::implicit_newmark && !use_lumped_mass) &&
+        (run_scheme == Scheme::implicit_newmark && !use_lumped_mass) &&
         !matrix_free_system;
 
       // The sparsity pattern, only if some matrix is stored (an explicit run
@@ -234,7 +234,7 @@ namespace rupture
                             &system_work})
         v->clear();
       if (matrix_free_system &&
-          (scheme != Scheme::explicit_central_difference ||
+          (run_scheme != Scheme::explicit_central_difference ||
            time_parameters.loading_phase))
         {
           TimerOutput::Scope t(timer, "System diagonal");
@@ -254,8 +254,9 @@ namespace rupture
         }
       multigrid.reset();
       if (linear_solver.multigrid() &&
-          (scheme == Scheme::quasi_static || time_parameters.loading_phase ||
-           (scheme == Scheme::implicit_newmark &&
+          (run_scheme == Scheme::quasi_static ||
+           time_parameters.loading_phase ||
+           (run_scheme == Scheme::implicit_newmark &&
             linear_solver.multigrid_in_dynamic_steps())))
         setup_multigrid();
       setup_fault_zone_damping();

@@ -1,15 +1,12 @@
 // Set-up of the degrees of freedom and of what depends on them: the
-// matrices, the matrix-free operator, the multigrid preconditioner and the
-// outputs.
+// discretization's DoFs and constraints (with the fault's pairs), the
+// elastic system's operators, the state's vectors and the outputs; the
+// ghosted copies of vectors.
 
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/base/utilities.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
 
 #include <algorithm>
 #include <limits>

@@ -36,6 +36,7 @@ namespace rupture
     , pcout(log.stream(),
             dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
     , timer(MPI_COMM_SELF, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , discretization(communicator)
     , elastic_system(discretization,
                      materials,
                      boundary_conditions,
@@ -45,7 +46,6 @@ namespace rupture
                      timer,
                      pcout,
                      communicator)
-    , discretization(communicator)
     , stable_time_step(0)
   {
     services                      = std::make_unique<Services>(*this);

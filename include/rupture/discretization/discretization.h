@@ -78,7 +78,8 @@ namespace rupture
       parse_parameters(ParameterHandler &prm);
 
       /// The fault whose two sides the mesh refines alike and whose cells
-      /// carry the field of their side (none: one field).
+      /// carry the field of their side (none: one field). Before the first
+      /// distribute_dofs(), which builds the elements for it.
       void
       set_fault(const Fault::Fault<dim> *fault);
 

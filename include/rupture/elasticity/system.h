@@ -103,7 +103,8 @@ namespace rupture
       /// <Damping> and <Loads>; with @p test_mode, print no sizes of memory.
       void
       parse_parameters(ParameterHandler &prm, const bool test_mode);
-      /// The explicit scheme always lumps the mass.
+      /// The explicit scheme always lumps the mass (after
+      /// parse_parameters(), which reads <Mass matrix>).
       void
       use_lumped_mass_always()
       {
@@ -125,8 +126,10 @@ namespace rupture
 
       // --- set-up and assembly (system.cc, assembly.cc) ---
       /// The operators of the current DoFs: the matrices' patterns, the
-      /// matrix-free operator, the diagonals, multigrid, the fault zone, and
-      /// the vectors of the constant loads and diagonal operators.
+      /// matrix-free operator, the diagonals, multigrid, the fault zone, the
+      /// vectors of the constant loads and diagonal operators, and the near
+      /// null space; the linear solver's preconditioner and factors of the
+      /// old matrices are cleared.
       void
       setup();
       /// Assemble the stored matrices, the lumped mass, the absorbing

@@ -115,10 +115,9 @@ namespace rupture
 
   private:
     /**
-     * The contracts of the time integrators (Operators::ElasticSystem,
-     * Solver::NonlinearStep, TimeIntegration::Kinematics), implemented by
-     * forwarding to this class's members until these move into classes
-     * of their own (doc/design-core-plan.md). Defined in
+     * The time integrators' nonlinear solve (Solver::NonlinearStep),
+     * implemented by forwarding to this class's Newton solve until that
+     * has a class of its own (doc/design-core-plan.md, S16). Defined in
      * simulator/services.h.
      */
     class Services;
@@ -203,20 +202,20 @@ namespace rupture
     /// the first phase's time step and integrator too.
     void
     assemble_physics_matrices(const bool prepare_first_phase = true);
-    /**
-     * Set the time step of a phase of the run, create its time integrator
-     * and let it build what its steps need: the effective stiffness and
-     * its preconditioner (implicit, quasi-static), or the diagonal
-     * (explicit, after the stability check here).
-     */
     /// The number of steps of at most @p requested_time_step in a phase of
     /// @p duration; a count that is not 1 to 1e9 is an input error.
     double
     n_steps_of_phase(const double duration,
                      const double requested_time_step) const;
-    /// With @p within_phase, the mesh of the current phase changed: the
-    /// time step of the rest of its current segment (state.clock) and the
-    /// integrator are set up again, its state kept.
+    /**
+     * Set the time step of a phase of the run, tell the elastic system its
+     * scheme, create its time integrator and let it build what its steps
+     * need: the effective stiffness and its preconditioner (implicit,
+     * quasi-static), or the diagonal (explicit, after the stability check
+     * here). With @p within_phase, the mesh of the current phase changed:
+     * the time step of the rest of its current segment (state.clock) and
+     * the integrator are set up again, its state kept.
+     */
     void
     prepare_phase(const TimeIntegration::Scheme scheme,
                   const double                  requested_time_step,
@@ -376,9 +375,6 @@ namespace rupture
     /// The output directory: its lock, manifest and atomic files.
     std::unique_ptr<Output::Directory> output_directory;
     bool                               test_mode;
-    /// The elastic body on the discretization: its operators, matrices,
-    /// loads and the preconditioners of its effective stiffness.
-    Elasticity::System<dim> elastic_system;
     /// <Output>'s entries of the volume snapshots.
     typename Output::VolumeOutput<dim>::Settings volume_settings;
     TimeIntegration::Parameters                  time_parameters;
@@ -409,6 +405,11 @@ namespace rupture
     /// Displacement, velocity, acceleration, time, step, its number and
     /// the phase clock.
     TimeIntegration::TimeState state;
+    /// The elastic body on the discretization: its operators, matrices,
+    /// loads and the preconditioners of its effective stiffness. Declared
+    /// after everything it refers to, so that it is destroyed first (its
+    /// matrix-free operator subscribes to the DoF handler).
+    Elasticity::System<dim> elastic_system;
     /// Early ends (the Termination subsection), why the run ended and the
     /// largest slip rate of the dynamic phase, for summary.json.
     Termination::Criteria termination;
