@@ -25,6 +25,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include "discretization/setup_dofs.h"
+
 #include <cstdio>
 #include <string>
 #include <tuple>
@@ -152,17 +154,7 @@ namespace
     discretization.make_mesh(*scene, materials, "", silent);
 
     const auto setup = [&]() {
-      discretization.distribute_dofs();
-      discretization.make_constraints(
-        [&](AffineConstraints<double> &constraints) {
-          fault->setup(discretization.dof_handler(),
-                       discretization.locally_owned_dofs(),
-                       discretization.locally_relevant_dofs(),
-                       constraints,
-                       std::vector<double>(1, 3e10),
-                       MPI_COMM_WORLD);
-        },
-        boundary_conditions);
+      tests::setup_dofs(discretization, *fault, boundary_conditions, 3e10);
       const IndexSet &owned = discretization.locally_owned_dofs();
       Setup<dim>      s;
       s.n_dofs     = discretization.dof_handler().n_dofs();

@@ -28,6 +28,8 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include "discretization/setup_dofs.h"
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -155,17 +157,10 @@ namespace
 
     // The products of a set-up, as vectors of this process's entries.
     const auto products = [&]() {
-      discretization.distribute_dofs();
-      discretization.make_constraints(
-        [&](AffineConstraints<double> &constraints) {
-          fault->setup(discretization.dof_handler(),
-                       discretization.locally_owned_dofs(),
-                       discretization.locally_relevant_dofs(),
-                       constraints,
-                       std::vector<double>(1, materials.get(0).mu),
-                       MPI_COMM_WORLD);
-        },
-        boundary_conditions);
+      tests::setup_dofs(discretization,
+                        *fault,
+                        boundary_conditions,
+                        materials.get(0).mu);
       system.setup();
       system.assemble();
       const double dt = state.time_step;
