@@ -30,6 +30,11 @@ namespace x {
     } factors;
     void solve(const std::function<void()> &f,
                const VectorType *p = nullptr);
+    int scheme() const
+    {
+      return 0;
+    }
+    double after_inline_function;
   };
 }
 """
@@ -39,10 +44,10 @@ def test_counts(script):
     tool = script("core-metrics")
     data, functions, friends = tool.count(SOURCE)
     assert friends == 1
-    # time, u, v, a, map, callback, factors
-    assert len(data) == 7
-    # the constructor, run, solve
-    assert len(functions) == 3
+    # time, u, v, a, map, callback, factors, after_inline_function
+    assert len(data) == 8
+    # the constructor, run, solve, scheme
+    assert len(functions) == 4
 
 
 def test_the_repository_parses(script, capsys):

@@ -131,6 +131,8 @@ namespace rupture
                 FE_Nothing<dim>(), dim, FE_Q<dim>(fe_degree), dim));
             }
         }
+      // Ghosted copies exchange by the pattern of the old DoFs.
+      ghosts.reset();
       dofs.reinit(mesh);
       if (fault)
         for (const auto &cell : dofs.active_cell_iterators())

@@ -3,7 +3,6 @@
 // integrators work with; the L2 error against an exact displacement.
 
 #include <rupture/operators/local_elasticity.h>
-#include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/base/partitioner.h>
@@ -165,11 +164,11 @@ namespace rupture
             energy,
             time_parameters,
             elastic_system,
-            *services,
+            newton,
             discretization,
             fault.get(),
-            newton,
-            newton_parameters,
+            newton.status(),
+            newton.parameters(),
             timer,
             pcout};
   }
@@ -180,7 +179,8 @@ namespace rupture
   double
   Simulator<dim>::compute_l2_error(const double time) const
   {
-    const VectorType &u_ghost = ghosted_copy(0, state.displacement);
+    const VectorType &u_ghost =
+      discretization.ghosted_copy(0, state.displacement);
     exact_displacement->set_time(time);
     const hp::QCollection<dim> q_cells(
       QGauss<dim>(discretization.degree() + 2));

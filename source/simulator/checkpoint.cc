@@ -303,7 +303,7 @@ namespace rupture
         records["checkpoint/fields"]    = fields.size();
         state.save(records);
         energy.save(records);
-        newton.save(records);
+        newton.status().save(records);
         output_schedule.save(records);
         records["output/peak slip rate"] = outcome.peak_slip_rate;
         integrator->save(records);
@@ -398,7 +398,7 @@ namespace rupture
 
     state.load(records);
     energy.load(records);
-    newton.load(records);
+    newton.status().load(records);
     output_schedule.load(records);
     outcome.peak_slip_rate = record("output/peak slip rate");
 

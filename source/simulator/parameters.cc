@@ -414,21 +414,7 @@ namespace rupture
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    newton_parameters.force_tolerance =
-      prm.get_double("Newton force tolerance");
-    newton_parameters.displacement_tolerance =
-      prm.get_double("Newton displacement tolerance");
-    newton_parameters.max_iterations =
-      prm.get_integer("Maximum Newton iterations");
-    newton_parameters.max_step_cuts = prm.get_integer("Maximum step cuts");
-    newton_parameters.stall_iterations =
-      prm.get_integer("Newton stall iterations");
-    newton_parameters.forcing = prm.get_double("Newton forcing");
-    newton_parameters.print_iterations =
-      prm.get_bool("Print Newton iterations");
-    newton_parameters.predictor = prm.get("Newton predictor");
-    newton_parameters.limit_stick_crossings =
-      prm.get_bool("Limit stick crossings");
+    newton.parse_parameters(prm);
     prm.leave_subsection();
 
     time_parameters.parse_parameters(prm);
@@ -458,6 +444,7 @@ namespace rupture
       }
     discretization.set_fault(fault.get());
     elastic_system.set_fault(fault.get());
+    newton.set_fault(fault.get());
     termination.parse_parameters(prm, fault != nullptr);
     prm.enter_subsection("Checkpoint");
     checkpoints.interval = prm.get_integer("Interval");

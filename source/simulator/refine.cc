@@ -1,19 +1,14 @@
-// A continued run on a finer mesh (--refine): the checkpoint's mesh is
-// refined, its fields and the fault's state are carried over by deal.II's
-// SolutionTransfer, and everything that depends on the mesh is set up
-// again.
+// A new mesh during a run (refined and coarsened as flagged) and a
+// continued run on a finer mesh (--refine): the fields and the fault's state
+// are carried over (Discretization::refine()), and everything that depends
+// on the mesh is set up again (setup_dofs()).
 
 #include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/fault/fault.h>
 #include <rupture/simulator/simulator.h>
 
-#include <deal.II/distributed/solution_transfer.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/la_parallel_vector.h>
-
 #include <algorithm>
 #include <iomanip>
-#include <memory>
 
 namespace rupture
 {
@@ -43,70 +38,12 @@ namespace rupture
     // included.)
     for (auto &c : carried)
       discretization.distribute_hanging(c);
-    // The transfer reads and writes every DoF of every cell: through
-    // deal.II's own vectors (direct indexing), not Trilinos' (a map lookup
-    // per entry), several times faster.
-    using Distributed = LinearAlgebra::distributed::Vector<double>;
-    std::vector<Distributed>         values(carried.size());
-    std::vector<const Distributed *> in;
-    for (unsigned int k = 0; k < carried.size(); ++k)
-      {
-        values[k].reinit(discretization.locally_owned_dofs(),
-                         discretization.locally_relevant_dofs(),
-                         communicator);
-        std::copy(carried[k].begin(), carried[k].end(), values[k].begin());
-        values[k].update_ghost_values();
-        in.push_back(&values[k]);
-      }
-    using Transfer = parallel::distributed::SolutionTransfer<dim, Distributed>;
-    auto transfer  = std::make_unique<Transfer>(discretization.dof_handler());
-    transfer->prepare_for_coarsening_and_refinement(in);
     timer.leave_subsection();
-    timer.enter_subsection("Refinement: new mesh");
-    discretization.triangulation().execute_coarsening_and_refinement();
-    // The mesh's balance (p4est's, which sees all processes) may have
-    // refined or coarsened a cell on one side of the fault only, and the
-    // fault's node pairs need both sides alike: before the fault is set
-    // up, the fields go to this mesh on its DoFs alone, the cells that
-    // lack a level are refined, and the fields go on to that mesh.
-    for (unsigned int k = 0; fault && k < 2 * mesh_refinement.levels + 2 &&
-                             discretization.flag_fault_alike();
-         ++k)
-      {
-        discretization.distribute_dofs();
-        std::vector<Distributed *> here;
-        for (auto &v : values)
-          {
-            v.reinit(discretization.locally_owned_dofs(),
-                     discretization.locally_relevant_dofs(),
-                     communicator);
-            here.push_back(&v);
-          }
-        transfer->interpolate(here);
-        for (auto &v : values)
-          v.update_ghost_values();
-        transfer = std::make_unique<Transfer>(discretization.dof_handler());
-        transfer->prepare_for_coarsening_and_refinement(in);
-        discretization.triangulation().execute_coarsening_and_refinement();
-      }
-    timer.leave_subsection();
-
-    setup_dofs();
-    TimerOutput::Scope         t(timer, "Refinement: interpolate");
-    std::vector<Distributed *> out;
-    for (auto &v : values)
-      {
-        v.reinit(discretization.locally_owned_dofs(),
-                 discretization.locally_relevant_dofs(),
-                 communicator);
-        out.push_back(&v);
-      }
-    transfer->interpolate(out);
-    for (unsigned int k = 0; k < carried.size(); ++k)
-      {
-        carried[k].reinit(discretization.locally_owned_dofs(), communicator);
-        std::copy(values[k].begin(), values[k].end(), carried[k].begin());
-      }
+    discretization.refine(
+      carried,
+      fault ? 2 * mesh_refinement.levels + 2 : 0,
+      [this]() { setup_dofs(); },
+      timer);
     for (unsigned int k = 0; k < fields.size(); ++k)
       {
         *fields[k] = carried[k];

@@ -1,7 +1,6 @@
 // Set-up of the degrees of freedom and of what depends on them: the
 // discretization's DoFs and constraints (with the fault's pairs), the
-// elastic system's operators, the state's vectors and the outputs; the
-// ghosted copies of vectors.
+// elastic system's operators, the state's vectors and the outputs.
 
 #include <rupture/base/utilities.h>
 #include <rupture/simulator/simulator.h>
@@ -19,9 +18,6 @@ namespace rupture
   Simulator<dim>::setup_dofs()
   {
     TimerOutput::Scope t(timer, "Set up DoFs");
-    // Ghosted copies exchange by the pattern of the old DoFs.
-    ghosts.reset();
-
     timer.enter_subsection("Set up DoFs: distribute");
     discretization.distribute_dofs();
     timer.leave_subsection();
@@ -79,22 +75,6 @@ namespace rupture
                                         discretization.locally_owned_dofs(),
                                         communicator);
       }
-  }
-
-
-
-  template <int dim>
-  const typename Simulator<dim>::VectorType &
-  Simulator<dim>::ghosted_copy(const unsigned int slot,
-                               const VectorType  &v) const
-  {
-    if (!ghosts)
-      ghosts =
-        std::make_unique<GhostedVectors>(discretization.locally_owned_dofs(),
-                                         discretization.locally_relevant_dofs(),
-                                         communicator,
-                                         2);
-    return ghosts->copy(slot, v);
   }
 
 

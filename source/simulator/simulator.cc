@@ -4,7 +4,6 @@
 #include <rupture/base/utilities.h>
 #include <rupture/operators/multigrid.h>
 #include <rupture/output/statistics_columns.h>
-#include <rupture/simulator/services.h>
 #include <rupture/simulator/simulator.h>
 
 #include <deal.II/base/index_set.h>
@@ -46,9 +45,17 @@ namespace rupture
                      timer,
                      pcout,
                      communicator)
+    , newton(state,
+             discretization,
+             elastic_system,
+             linear_solver,
+             timer,
+             pcout,
+             [this](const VectorType &v, const std::string &what) {
+               check_finite(v, what);
+             })
     , stable_time_step(0)
   {
-    services                      = std::make_unique<Services>(*this);
     this->checkpoints.resume      = resume;
     this->checkpoints.refinements = refinements;
     parse_parameters(prm);
@@ -501,10 +508,10 @@ namespace rupture
         pcout << "   Krylov iterations per linear solve:";
         const char *names[] = {"quasi-static", "dynamic"};
         for (unsigned int p = 0; p < 2; ++p)
-          if (newton.n_linear_solves[p] > 0)
+          if (newton.status().n_linear_solves[p] > 0)
             pcout << " " << std::fixed << std::setprecision(1)
-                  << double(newton.total_linear_iterations[p]) /
-                       newton.n_linear_solves[p]
+                  << double(newton.status().total_linear_iterations[p]) /
+                       newton.status().n_linear_solves[p]
                   << " (" << names[p] << ", "
                   << (p == 0 || linear_solver.multigrid_in_dynamic_steps() ?
                         "multigrid" :
@@ -629,7 +636,7 @@ namespace rupture
                 const Fault::Statistics f = fault->statistics();
                 pcout << "\n    ";
                 if (!fault->uses_split_nodes())
-                  pcout << "Newton: " << newton.last_iterations
+                  pcout << "Newton: " << newton.status().last_iterations
                         << " iterations; ";
                 pcout << "fault: " << f.n_slipping << " slipping, " << f.n_open
                       << " open nodes, max slip " << std::setprecision(3)
@@ -646,7 +653,8 @@ namespace rupture
                 if (current_scheme() !=
                     TimeIntegration::Scheme::explicit_central_difference)
                   pcout << "\n    Linear solver: "
-                        << newton.last_linear_iterations << " iterations";
+                        << newton.status().last_linear_iterations
+                        << " iterations";
               }
             pcout << std::defaultfloat << std::endl;
           }
@@ -716,7 +724,7 @@ namespace rupture
     if (!(scale > 0) || std::abs(error) <= 0.5 * scale)
       return;
     // (Collective: every rank has the same energies.)
-    const std::string  where = locate_largest(state.displacement);
+    const std::string where = discretization.locate_largest(state.displacement);
     std::ostringstream message;
     message << "At step " << state.step << " (t = " << state.clock.phase_time
             << " s) the energy balance error is " << std::abs(error) / scale
@@ -738,7 +746,7 @@ namespace rupture
       static_cast<double>(state.step),
       state.clock.phase_time,
       state.time_step,
-      static_cast<double>(newton.last_linear_iterations),
+      static_cast<double>(newton.status().last_linear_iterations),
       energy.kinetic,
       energy.strain,
       energy.external_work,
@@ -755,18 +763,19 @@ namespace rupture
         const double mw = (dim == 3 && f.seismic_moment > 0) ?
                             2. / 3. * (std::log10(f.seismic_moment) - 9.1) :
                             0.;
-        for (const double v : {static_cast<double>(newton.last_iterations),
-                               static_cast<double>(f.n_slipping),
-                               static_cast<double>(f.n_open),
-                               f.slipping_area,
-                               f.max_slip,
-                               f.max_slip_rate,
-                               f.seismic_moment,
-                               mw,
-                               f.frictional_energy,
-                               energy.fault_work,
-                               f.mean_normal_traction,
-                               f.mean_shear_traction})
+        for (const double v :
+             {static_cast<double>(newton.status().last_iterations),
+              static_cast<double>(f.n_slipping),
+              static_cast<double>(f.n_open),
+              f.slipping_area,
+              f.max_slip,
+              f.max_slip_rate,
+              f.seismic_moment,
+              mw,
+              f.frictional_energy,
+              energy.fault_work,
+              f.mean_normal_traction,
+              f.mean_shear_traction})
           row.push_back(v);
       }
     if (elastic_system.has_absorbing())
@@ -840,8 +849,8 @@ namespace rupture
     if (volume_due)
       {
         volume_output->write(discretization.dof_handler(),
-                             ghosted_copy(0, state.displacement),
-                             ghosted_copy(1, state.velocity),
+                             discretization.ghosted_copy(0, state.displacement),
+                             discretization.ghosted_copy(1, state.velocity),
                              state.clock.phase_time,
                              state.step);
         output_schedule.next_output_time =

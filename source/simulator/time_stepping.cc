@@ -20,63 +20,6 @@ namespace rupture
 
 
   template <int dim>
-  std::string
-  Simulator<dim>::locate_largest(const VectorType &v) const
-  {
-    // The support point of the entry that is not finite, or of the largest
-    // one; over all ranks.
-    Point<dim>   where;
-    unsigned int where_component = 0;
-    double       worst           = -1;
-    for (const auto &cell :
-         discretization.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto                          &fe = cell->get_fe();
-          std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (discretization.locally_owned_dofs().is_element(dofs[i]))
-              {
-                const double value = v(dofs[i]);
-                const double size  = std::isfinite(value) ?
-                                       std::abs(value) :
-                                       std::numeric_limits<double>::max();
-                if (size > worst)
-                  {
-                    worst = size;
-                    where = MappingQ1<dim>().transform_unit_to_real_cell(
-                      cell, fe.unit_support_point(i));
-                    where_component =
-                      fe.system_to_component_index(i).first % dim;
-                  }
-              }
-        }
-    const auto global_worst = dealii::Utilities::MPI::max(worst, communicator);
-    const unsigned int rank =
-      dealii::Utilities::MPI::this_mpi_process(communicator);
-    const unsigned int owner =
-      dealii::Utilities::MPI::min(worst == global_worst ?
-                                    rank :
-                                    dealii::numbers::invalid_unsigned_int,
-                                  communicator);
-    std::array<double, dim + 1> data;
-    for (unsigned int d = 0; d < dim; ++d)
-      data[d] = where[d];
-    data[dim] = where_component;
-    MPI_Bcast(data.data(), dim + 1, MPI_DOUBLE, owner, communicator);
-
-    std::ostringstream text;
-    text << "largest in component " << static_cast<int>(data[dim]) << " at (";
-    for (unsigned int d = 0; d < dim; ++d)
-      text << (d > 0 ? ", " : "") << data[d];
-    text << ") m";
-    return text.str();
-  }
-
-
-
-  template <int dim>
   void
   Simulator<dim>::check_finite(const VectorType  &v,
                                const std::string &what,
@@ -89,7 +32,8 @@ namespace rupture
     std::ostringstream message;
     message << "At step " << state.step << " (t = " << state.clock.phase_time
             << " s) the " << what << " is no longer finite, "
-            << locate_largest(v) << "; the run was stopped before writing it. ";
+            << discretization.locate_largest(v)
+            << "; the run was stopped before writing it. ";
     if (current_scheme() ==
         TimeIntegration::Scheme::explicit_central_difference)
       message << "The explicit scheme blew up: its time step "
@@ -216,7 +160,7 @@ namespace rupture
         initial_split_node_force(r, energy.contact_force);
       }
     else if (fault)
-      assemble_contact(energy.contact_force, false, 1);
+      newton.add_contact_force(energy.contact_force);
 
     if (current_scheme() == TimeIntegration::Scheme::quasi_static)
       {

@@ -2,12 +2,14 @@
 #define rupture_discretization_discretization_h
 
 #include <rupture/base/constraint_distributor.h>
+#include <rupture/base/ghosted_vectors.h>
 #include <rupture/time_integration/kinematics.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/fe_collection.h>
@@ -101,6 +103,22 @@ namespace rupture
       /// flagged one. Collective.
       bool
       flag_fault_alike();
+      /**
+       * Refine and coarsen the mesh as flagged and carry @p fields (vectors
+       * of the current DoFs, their hanging DoFs distributed) to the new
+       * DoFs. The mesh's balance may leave a fault face with one side finer
+       * than the other: up to @p max_alike_rounds more rounds refine those
+       * cells (the fields carried through each). @p setup is called once
+       * the mesh is final, before the fields are interpolated to it: it
+       * distributes the DoFs and sets up what depends on them (step-75's
+       * setup_system()). Times its parts in @p timer ("Refinement: ...").
+       * Collective.
+       */
+      void
+      refine(std::vector<VectorType>     &fields,
+             const unsigned int           max_alike_rounds,
+             const std::function<void()> &setup,
+             TimerOutput                 &timer);
       /// The level a cell had before any adaptation: the scene's own
       /// levels, the global refinements and the refinement region's.
       unsigned int
@@ -135,6 +153,22 @@ namespace rupture
                                  const std::vector<types::global_dof_index> &,
                                  const std::vector<Point<dim>> &)> &action)
         const;
+
+      // --- vectors on the DoFs (vectors.cc) ---
+      /**
+       * A ghosted copy of @p v (locally owned entries) in slot @p slot (0
+       * or 1), valid until the slot's next use or the next
+       * distribute_dofs(). Two slots: the volume output needs displacement
+       * and velocity together. The exchange pattern is built at the first
+       * use after distribute_dofs(). Collective.
+       */
+      const VectorType &
+      ghosted_copy(const unsigned int slot, const VectorType &v) const;
+      /// "largest in component c at (x, y, z) m": where |v| is largest, or
+      /// first not finite, over all processes (support points, MappingQ1).
+      /// Collective.
+      std::string
+      locate_largest(const VectorType &v) const;
 
       /// Which displacement components a kinematic boundary holds at some
       /// DoF this process owns.
@@ -273,6 +307,9 @@ namespace rupture
       /// Sets the tied DoFs of a vector.
       ConstraintDistributor     hanging_distributor;
       std::vector<KinematicDof> kinematic_dofs;
+      /// The ghosted copies of ghosted_copy(), built at their first use
+      /// after distribute_dofs().
+      mutable std::unique_ptr<GhostedVectors> ghosts;
     };
   } // namespace Discretization
 } // namespace rupture

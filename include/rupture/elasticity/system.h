@@ -123,6 +123,11 @@ namespace rupture
       {
         this->scheme = scheme;
       }
+      TimeIntegration::Scheme
+      current_scheme() const
+      {
+        return scheme;
+      }
 
       // --- set-up and assembly (system.cc, assembly.cc) ---
       /// The operators of the current DoFs: the matrices' patterns, the

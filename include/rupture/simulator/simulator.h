@@ -2,12 +2,12 @@
 #define rupture_simulator_simulator_h
 
 #include <rupture/adaptivity/parameters.h>
-#include <rupture/base/ghosted_vectors.h>
 #include <rupture/discretization/discretization.h>
 #include <rupture/elasticity/system.h>
 #include <rupture/fault/fault.h>
 #include <rupture/fault/fault_output.h>
 #include <rupture/material/elastic_material.h>
+#include <rupture/nonlinear/newton.h>
 #include <rupture/operators/element_frequency.h>
 #include <rupture/output/directory.h>
 #include <rupture/output/log.h>
@@ -56,16 +56,6 @@ namespace rupture
 
   using namespace dealii;
 
-  namespace TimeIntegration
-  {
-    template <int dim>
-    class CentralDifference;
-    template <int dim>
-    class ImplicitNewmark;
-    template <int dim>
-    class QuasiStatic;
-  } // namespace TimeIntegration
-
   /**
    * Drives a run: reads the parameters, builds the discretization
    * (Discretization::Discretization: mesh, DoFs, constraints) and the
@@ -79,12 +69,11 @@ namespace rupture
    * The work is split over several files, as in ASPECT: simulator.cc (set
    * up and time loop), setup.cc (the DoFs and what depends on them),
    * assembly.cc (the phases: time step and integrator), time_stepping.cc
-   * (initial state and energies), newton.cc (the nonlinear solve of a
-   * step), refine.cc and adapt.cc (a new mesh during the run). The time
-   * integrators (TimeIntegration::Interface, one class per scheme) step the
-   * state through the contracts of their TimeIntegration::Context: the
-   * elastic system, the discretization's constraints, and the nonlinear
-   * solve, which Services implements with this class's members.
+   * (initial state and energies), refine.cc and adapt.cc (a new mesh
+   * during the run). The time integrators (TimeIntegration::Interface, one
+   * class per scheme) step the state through the contracts of their
+   * TimeIntegration::Context: the elastic system, the discretization's
+   * constraints, and the nonlinear solve (Nonlinear::Newton).
    */
   template <int dim>
   class Simulator
@@ -114,14 +103,6 @@ namespace rupture
     run();
 
   private:
-    /**
-     * The time integrators' nonlinear solve (Solver::NonlinearStep),
-     * implemented by forwarding to this class's Newton solve until that
-     * has a class of its own (doc/design-core-plan.md, S16). Defined in
-     * simulator/services.h.
-     */
-    class Services;
-    std::unique_ptr<Services> services;
     /// What the time integrators work with (built once per phase).
     TimeIntegration::Context<dim>
     integrator_context();
@@ -282,13 +263,6 @@ namespace rupture
     /// Restore the state after the mesh and the DoFs are set up.
     void
     read_checkpoint();
-    /**
-     * A ghosted copy of @p v in slot @p slot (0 or 1), valid until the
-     * slot's next use. Two slots: the volume output needs displacement and
-     * velocity together.
-     */
-    const VectorType &
-    ghosted_copy(const unsigned int slot, const VectorType &v) const;
     /// The explicit scheme's highest element frequency, remembered by
     /// cell shape across meshes.
     Operators::ElementFrequencies<dim> element_frequencies;
@@ -298,30 +272,6 @@ namespace rupture
     // --- time stepping (time_stepping.cc) ---
     void
     initialize_state();
-    using NewtonFailure = Solver::NewtonFailure;
-    /**
-     * Solve for the displacement at the new time: one linear solve without
-     * a fault, Newton's method (the paper's Fig. 6) with one. @p update_rates
-     * sets velocity and acceleration from the displacement, and
-     * @p compute_residual the residual f - M a - C v - K u - F_contact
-     * (unconstrained) and the damping force. Newton's method starts from
-     * the old displacement plus @p predicted_increment (if given) at the
-     * unconstrained DoFs, and plus the prescribed boundary motion.
-     */
-    void
-    solve_step(const VectorType            &old_displacement,
-               const std::function<void()> &update_rates,
-               const std::function<void()> &compute_residual,
-               VectorType                  &residual,
-               const VectorType            *predicted_increment = nullptr);
-    /**
-     * Add the contact forces at the current displacement to @p force (and
-     * @p sign times the contact tangent to the system matrix if asked).
-     */
-    void
-    assemble_contact(VectorType  &force,
-                     const bool   with_tangent,
-                     const double sign);
     /**
      * The fault forces of the traction-at-split-node method in the initial
      * state, for the residual @p residual of the other forces, with the
@@ -329,14 +279,12 @@ namespace rupture
      */
     void
     initial_split_node_force(const VectorType &residual, VectorType &force);
+    /// Stop the run if @p v (the @p what of the step) is not finite, or
+    /// @p overflowed, naming the place and the likely cause.
     void
     check_finite(const VectorType  &v,
                  const std::string &what,
                  const bool         overflowed = false) const;
-    /// "largest in component c at (x, y, z) m": where |v| is largest (or
-    /// not finite), over all ranks.
-    std::string
-    locate_largest(const VectorType &v) const;
     /// Stop an explicit run above the stable step whose energy balance
     /// error has grown to half of the energy in play.
     void
@@ -410,6 +358,10 @@ namespace rupture
     /// after everything it refers to, so that it is destroyed first (its
     /// matrix-free operator subscribes to the DoF handler).
     Elasticity::System<dim> elastic_system;
+    /// The nonlinear solve of an implicit or quasi-static step, its
+    /// controls and what it reports (after the elastic system it solves
+    /// with).
+    Nonlinear::Newton<dim> newton;
     /// Early ends (the Termination subsection), why the run ended and the
     /// largest slip rate of the dynamic phase, for summary.json.
     Termination::Criteria termination;
@@ -432,19 +384,13 @@ namespace rupture
     /// Whether prepare_output_directory() has run (only then may the
     /// destructor write the statistics of a failed run).
     bool output_prepared = false;
-    /// Newton's controls and what it reports.
-    Solver::NewtonParameters newton_parameters;
-    Solver::NewtonStatus     newton;
     /// Wall times, DoF-steps and memory of the run so far.
     Output::RunCost cost;
     /// When volume, fault surface, screen and tables are written.
     Output::OutputSchedule output_schedule;
 
     std::unique_ptr<Output::VolumeOutput<dim>> volume_output;
-    /// Ghosted copies (locally relevant entries) with their exchange
-    /// pattern built once, at the first use (ghosted_copy()).
-    mutable std::unique_ptr<GhostedVectors> ghosts;
-    Output::Statistics                      statistics;
+    Output::Statistics                         statistics;
     /// <Mesh refinement>: the mesh that follows the rupture.
     Adaptivity::Parameters mesh_refinement;
     /// Which cells the mesh that follows the rupture refines and
