@@ -100,7 +100,7 @@ namespace rupture
           Station s;
           s.name     = name;
           s.location = location;
-          stations.push_back(s);
+          stations.push_back(std::move(s));
         }
     }
 
@@ -332,6 +332,16 @@ namespace rupture
 
     template <int dim>
     void
+    FaultOutput<dim>::keep_series_in(Output::Directory &directory)
+    {
+      for (auto &s : stations)
+        s.rows.keep_in_file(directory.record(".station-" + s.name + ".rows"));
+    }
+
+
+
+    template <int dim>
+    void
     FaultOutput<dim>::record(const Fault<dim> &fault, const double time)
     {
       if (stations.empty())
@@ -373,7 +383,7 @@ namespace rupture
               row.push_back(normal / 1e6);
               row.insert(row.end(), state.begin(), state.end());
             }
-          s.rows.push_back(row);
+          s.rows.append(row);
         }
     }
 
@@ -524,8 +534,8 @@ namespace rupture
                   << "\n";
             }
           std::vector<double> times;
-          for (const auto &row : s.rows)
-            times.push_back(row[0]);
+          s.rows.for_each(
+            [&](const std::vector<double> &row) { times.push_back(row[0]); });
           out << "# code = rupture\n# code_version = 0.1\n"
               << Output::time_step_lines(times, time_step)
               << "# num_time_steps = " << s.rows.size() << "\n"
@@ -563,12 +573,11 @@ namespace rupture
                 }
             }
           out << header << "\n" << std::scientific << std::setprecision(7);
-          for (const auto &row : s.rows)
-            {
-              for (unsigned int c = 0; c < row.size(); ++c)
-                out << (c ? " " : "") << row[c];
-              out << "\n";
-            }
+          s.rows.for_each([&](const std::vector<double> &row) {
+            for (unsigned int c = 0; c < row.size(); ++c)
+              out << (c ? " " : "") << row[c];
+            out << "\n";
+          });
           directory.write(s.name + ".dat", out.str());
         }
 
@@ -601,7 +610,7 @@ namespace rupture
       BinaryIO::write(out, pvd_name);
       BinaryIO::write(out, static_cast<std::uint64_t>(stations.size()));
       for (const auto &s : stations)
-        BinaryIO::write(out, s.rows);
+        s.rows.save(out);
     }
 
 
@@ -617,7 +626,7 @@ namespace rupture
                   ExcMessage("The checkpoint has another number of fault "
                              "stations than <Fault/Output/Stations> gives."));
       for (auto &s : stations)
-        BinaryIO::read(in, s.rows);
+        s.rows.load(in);
     }
 
 

@@ -26,7 +26,7 @@ namespace rupture
           Receiver r;
           r.name     = name;
           r.location = location;
-          receivers.push_back(r);
+          receivers.push_back(std::move(r));
         }
     }
 
@@ -129,14 +129,14 @@ namespace rupture
         return;
       for (unsigned int k = 0; k < receivers.size(); ++k)
         {
-          std::array<double, 1 + 2 * dim> row;
+          std::vector<double> row(1 + 2 * dim);
           row[0] = time;
           for (unsigned int c = 0; c < dim; ++c)
             {
               row[1 + 2 * c] = values[(2 * k) * dim + c];
               row[2 + 2 * c] = values[(2 * k + 1) * dim + c];
             }
-          receivers[k].rows.push_back(row);
+          receivers[k].rows.append(row);
         }
     }
 
@@ -153,8 +153,8 @@ namespace rupture
         {
           std::ostringstream  out;
           std::vector<double> times;
-          for (const auto &row : r.rows)
-            times.push_back(row[0]);
+          r.rows.for_each(
+            [&](const std::vector<double> &row) { times.push_back(row[0]); });
           out << "# problem = rupture receiver (off-fault station) output\n"
               << "# author = rupture\n# code = rupture\n"
               << "# code_version = 0.1\n"
@@ -170,12 +170,11 @@ namespace rupture
           for (unsigned int c = 0; c < dim; ++c)
             out << " " << axis[c] << "-disp " << axis[c] << "-vel";
           out << "\n" << std::setprecision(9) << std::scientific;
-          for (const auto &row : r.rows)
-            {
-              for (unsigned int i = 0; i < row.size(); ++i)
-                out << (i ? " " : "") << row[i];
-              out << "\n";
-            }
+          r.rows.for_each([&](const std::vector<double> &row) {
+            for (unsigned int i = 0; i < row.size(); ++i)
+              out << (i ? " " : "") << row[i];
+            out << "\n";
+          });
           directory.write(r.name + ".dat", out.str());
         }
     }
@@ -188,12 +187,7 @@ namespace rupture
     {
       BinaryIO::write(out, static_cast<std::uint64_t>(receivers.size()));
       for (const auto &r : receivers)
-        {
-          std::vector<std::vector<double>> rows;
-          for (const auto &row : r.rows)
-            rows.emplace_back(row.begin(), row.end());
-          BinaryIO::write(out, rows);
-        }
+        r.rows.save(out);
     }
 
 
@@ -207,16 +201,10 @@ namespace rupture
                              "receivers than <Output/Receivers> gives."));
       for (auto &r : receivers)
         {
-          std::vector<std::vector<double>> rows;
-          BinaryIO::read(in, rows);
-          r.rows.resize(rows.size());
-          for (unsigned int i = 0; i < rows.size(); ++i)
-            {
-              AssertThrow(rows[i].size() == r.rows[i].size(),
-                          ExcMessage("A receiver row of the checkpoint has "
-                                     "the wrong length."));
-              std::copy(rows[i].begin(), rows[i].end(), r.rows[i].begin());
-            }
+          r.rows.load(in);
+          AssertThrow(r.rows.empty() || r.rows.last().size() == 1 + 2 * dim,
+                      ExcMessage("A receiver row of the checkpoint has "
+                                 "the wrong length."));
         }
     }
 

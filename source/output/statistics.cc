@@ -5,6 +5,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -12,11 +13,47 @@ namespace rupture
 {
   namespace Output
   {
+    namespace
+    {
+      /// A row as the table writes it.
+      void
+      write_row(std::ostream &out, const std::vector<double> &row)
+      {
+        for (unsigned int c = 0; c < row.size(); ++c)
+          out << (c ? " " : "") << row[c];
+        out << "\n";
+      }
+    } // namespace
+
+
+
+    void
+    Statistics::keep_in_files(const std::string &table,
+                              const std::string &row_file)
+    {
+      table_file = table;
+      rows.keep_in_file(row_file);
+      table_current = false;
+      unwritten.clear();
+    }
+
+
+
+    void
+    Statistics::keep_no_rows()
+    {
+      rows.keep_rows(false);
+    }
+
+
+
     void
     Statistics::set_columns(const std::vector<std::string> &names)
     {
       columns = names;
       rows.clear();
+      table_current = false;
+      unwritten.clear();
     }
 
 
@@ -26,7 +63,14 @@ namespace rupture
     {
       Assert(values.size() == columns.size(),
              dealii::ExcDimensionMismatch(values.size(), columns.size()));
-      rows.push_back(values);
+      rows.append(values);
+      if (table_current)
+        {
+          std::ostringstream out;
+          out << std::setprecision(14);
+          write_row(out, values);
+          unwritten += out.str();
+        }
     }
 
 
@@ -35,7 +79,7 @@ namespace rupture
     Statistics::last_row() const
     {
       Assert(!rows.empty(), dealii::ExcInternalError());
-      return rows.back();
+      return rows.last();
     }
 
 
@@ -69,19 +113,33 @@ namespace rupture
 
 
     void
-    Statistics::write(const std::string &filename) const
+    Statistics::write()
     {
+      AssertThrow(!table_file.empty(), dealii::ExcInternalError());
+      if (table_current)
+        {
+          // The new rows, appended (a run of a million steps does not
+          // rewrite its table every minute).
+          std::ofstream out(table_file, std::ios::app);
+          out << unwritten;
+          out.close();
+          AssertThrow(out,
+                      dealii::ExcMessage("The statistics <" + table_file +
+                                         "> cannot be written: is the disk "
+                                         "full?"));
+          unwritten.clear();
+          return;
+        }
+      // The whole table, through a temporary name.
       std::ostringstream out;
       for (unsigned int c = 0; c < columns.size(); ++c)
         out << "# " << c + 1 << ": " << columns[c] << "\n";
       out << std::setprecision(14);
-      for (const auto &row : rows)
-        {
-          for (unsigned int c = 0; c < row.size(); ++c)
-            out << (c ? " " : "") << row[c];
-          out << "\n";
-        }
-      Utilities::write_file_atomically(filename, out.str());
+      rows.for_each(
+        [&](const std::vector<double> &row) { write_row(out, row); });
+      Utilities::write_file_atomically(table_file, out.str());
+      table_current = true;
+      unwritten.clear();
     }
     void
     Statistics::save(std::ostream &out) const
@@ -89,7 +147,7 @@ namespace rupture
       BinaryIO::write(out, static_cast<std::uint64_t>(columns.size()));
       for (const auto &c : columns)
         BinaryIO::write(out, c);
-      BinaryIO::write(out, rows);
+      rows.save(out);
     }
 
 
@@ -100,7 +158,9 @@ namespace rupture
       columns.resize(BinaryIO::read_size(in));
       for (auto &c : columns)
         BinaryIO::read(in, c);
-      BinaryIO::read(in, rows);
+      rows.load(in);
+      table_current = false;
+      unwritten.clear();
     }
 
 

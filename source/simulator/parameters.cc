@@ -120,21 +120,7 @@ namespace rupture
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Initial conditions");
-    {
-      prm.declare_entry("Displacement",
-                        "",
-                        Patterns::Anything(),
-                        "Initial displacement (m) as a function of x, y (, "
-                        "z), one expression per component separated by ';'. "
-                        "Empty for zero.");
-      prm.declare_entry("Velocity",
-                        "",
-                        Patterns::Anything(),
-                        "Initial velocity (m/s), in the same form. Empty for "
-                        "zero.");
-    }
-    prm.leave_subsection();
+    Scene::InitialConditions<dim>::declare_parameters(prm);
 
     prm.enter_subsection("Verification");
     {
@@ -386,16 +372,7 @@ namespace rupture
     prm.leave_subsection();
     elastic_system.parse_parameters(prm, test_mode);
 
-    prm.enter_subsection("Initial conditions");
-    initial_displacement =
-      Utilities::parse_function<dim>(prm.get("Displacement"),
-                                     dim,
-                                     "Initial conditions/Displacement");
-    initial_velocity =
-      Utilities::parse_function<dim>(prm.get("Velocity"),
-                                     dim,
-                                     "Initial conditions/Velocity");
-    prm.leave_subsection();
+    initial_conditions.parse_parameters(prm);
 
     prm.enter_subsection("Verification");
     if (!dealii::Utilities::trim(prm.get("Exact displacement")).empty())

@@ -144,11 +144,12 @@ namespace rupture
     // completed; statistics live on rank 0 only, so no communication.
     // Nothing is written if the input was refused (the output directory
     // was never touched).
-    if (output_prepared && statistics.n_rows() > 0 &&
+    if (output_directory && output_directory->is_open() &&
+        statistics.n_rows() > 0 &&
         dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       try
         {
-          statistics.write(output_directory->record("statistics"));
+          statistics.write();
         }
       catch (...)
         {}
@@ -175,8 +176,19 @@ namespace rupture
     if (!test_mode)
       pcout << "   Output directory: " << output_directory->absolute_name()
             << std::endl;
-    output_prepared = true;
-    volume_output   = std::make_unique<Output::VolumeOutput<dim>>(
+    // The time series keep their rows in scratch files of the directory,
+    // on the process that writes them.
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        statistics.keep_in_files(output_directory->record("statistics"),
+                                 output_directory->record(".statistics.rows"));
+        receivers->keep_series_in(*output_directory);
+        if (fault)
+          fault_output->keep_series_in(*output_directory);
+      }
+    else
+      statistics.keep_no_rows();
+    volume_output = std::make_unique<Output::VolumeOutput<dim>>(
       *output_directory, materials, volume_settings, communicator);
   }
 
@@ -216,7 +228,7 @@ namespace rupture
   Simulator<dim>::write_failure_summary(const std::string &message)
   {
     // (Never a second exception while the first is on its way.)
-    if (output_prepared)
+    if (output_directory && output_directory->is_open())
       try
         {
           write_summary("failed", message);
@@ -871,7 +883,7 @@ namespace rupture
                                  state.time_step,
                                  test_mode);
     if (root)
-      statistics.write(output_directory->record("statistics"));
+      statistics.write();
     output_schedule.last_table_write = MPI_Wtime();
 
     if (signal != 0)

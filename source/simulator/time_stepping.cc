@@ -92,8 +92,9 @@ namespace rupture
             {
               const unsigned int c =
                 fe.system_to_component_index(i).first % dim;
-              const double u = initial_displacement->value(points[i], c);
-              const double v = initial_velocity->value(points[i], c);
+              const double u =
+                initial_conditions.displacement->value(points[i], c);
+              const double v = initial_conditions.velocity->value(points[i], c);
               state.displacement(dofs[i]) = u;
               state.velocity(dofs[i])     = v + side * half_slip_velocity[c];
               if (error.empty() && !(std::isfinite(u) && std::isfinite(v)))

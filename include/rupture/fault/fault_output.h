@@ -3,6 +3,7 @@
 
 #include <rupture/fault/fault.h>
 #include <rupture/output/directory.h>
+#include <rupture/output/series.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -83,6 +84,13 @@ namespace rupture
             const double      surface);
 
       /**
+       * Keep the stations' rows in scratch files of @p directory (on the
+       * process that writes them) instead of in memory.
+       */
+      void
+      keep_series_in(Output::Directory &directory);
+
+      /**
        * Record the station values of the current step.
        */
       void
@@ -128,7 +136,7 @@ namespace rupture
         Point<dim>                           location;
         std::vector<types::global_dof_index> nodes;
         std::vector<double>                  weights;
-        std::vector<std::vector<double>>     rows;
+        Output::Series                       rows;
       };
 
       double

@@ -73,6 +73,12 @@ namespace rupture
        */
       const std::string &
       name() const;
+      /// Whether open() has succeeded (only then may results be written).
+      bool
+      is_open() const
+      {
+        return opened;
+      }
       std::string
       absolute_name() const;
 

@@ -2,6 +2,7 @@
 #define rupture_output_receivers_h
 
 #include <rupture/output/directory.h>
+#include <rupture/output/series.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
@@ -85,6 +86,16 @@ namespace rupture
           r.rows.clear();
       }
 
+      /// Keep the rows in scratch files of @p directory (on the process
+      /// that writes them) instead of in memory.
+      void
+      keep_series_in(Directory &directory)
+      {
+        for (auto &r : receivers)
+          r.rows.keep_in_file(
+            directory.record(".receiver-" + r.name + ".rows"));
+      }
+
       /// Write all rows so far (rank 0), replacing the files.
       void
       write(Directory &directory, const double time_step) const;
@@ -101,7 +112,7 @@ namespace rupture
         std::vector<unsigned int>            components;
         bool                                 owned = false;
         /// Rows of (time, u, v) on rank 0.
-        std::vector<std::array<double, 1 + 2 * dim>> rows;
+        Series rows;
       };
 
       MPI_Comm                      communicator;

@@ -1,6 +1,9 @@
 #ifndef rupture_output_statistics_h
 #define rupture_output_statistics_h
 
+#include <rupture/output/series.h>
+
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -11,8 +14,10 @@ namespace rupture
   {
     /**
      * The table <output>/statistics: one row per time step, with a header
-     * that documents each column ("# 3: Kinetic energy (J)"). The file is
-     * rewritten through a temporary name so it is never half written.
+     * that documents each column ("# 3: Kinetic energy (J)"). The process
+     * that writes it keeps the rows in a file of their own (Output::Series)
+     * and appends the new rows to the table at each write(); the others
+     * keep only the last row.
      */
     class Statistics
     {
@@ -26,6 +31,15 @@ namespace rupture
       void
       load(std::istream &in);
       /**
+       * Write the table to @p table, with its rows kept in the scratch file
+       * @p rows (on the process that writes it).
+       */
+      void
+      keep_in_files(const std::string &table, const std::string &rows);
+      /// Keep no rows (the processes that do not write the table).
+      void
+      keep_no_rows();
+      /**
        * Set the column names (with units). Must be called before add_row().
        */
       void
@@ -35,10 +49,12 @@ namespace rupture
       add_row(const std::vector<double> &values);
 
       /**
-       * Write the whole table to @p filename.
+       * Bring the table up to date: append the rows added since the last
+       * write (the header and every row at the first write, and after
+       * set_columns() or load()).
        */
       void
-      write(const std::string &filename) const;
+      write();
 
       const std::vector<double> &
       last_row() const;
@@ -62,8 +78,14 @@ namespace rupture
       }
 
     private:
-      std::vector<std::string>         columns;
-      std::vector<std::vector<double>> rows;
+      std::vector<std::string> columns;
+      Series                   rows;
+      /// The table's file, and its rows not written yet as text.
+      std::string table_file;
+      std::string unwritten;
+      /// Whether the table file holds the header and every row but those
+      /// in @p unwritten.
+      bool table_current = false;
     };
   } // namespace Output
 } // namespace rupture

@@ -17,6 +17,7 @@
 #include <rupture/output/statistics.h>
 #include <rupture/output/volume_output.h>
 #include <rupture/scene/boundary_conditions.h>
+#include <rupture/scene/initial_conditions.h>
 #include <rupture/scene/scene.h>
 #include <rupture/simulator/checkpoint_control.h>
 #include <rupture/simulator/termination.h>
@@ -334,8 +335,7 @@ namespace rupture
     {
       return integrator->scheme();
     }
-    std::unique_ptr<FunctionParser<dim>> initial_displacement;
-    std::unique_ptr<FunctionParser<dim>> initial_velocity;
+    Scene::InitialConditions<dim>        initial_conditions;
     std::unique_ptr<FunctionParser<dim>> exact_displacement;
 
     // Components.
@@ -381,9 +381,6 @@ namespace rupture
     double stable_time_step;
     /// The energy budget and the forces of its trapezoidal rule.
     TimeIntegration::EnergyBudget energy;
-    /// Whether prepare_output_directory() has run (only then may the
-    /// destructor write the statistics of a failed run).
-    bool output_prepared = false;
     /// Wall times, DoF-steps and memory of the run so far.
     Output::RunCost cost;
     /// When volume, fault surface, screen and tables are written.
