@@ -5,7 +5,10 @@
 
 #include <rupture/simulator/run.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -42,6 +45,33 @@ namespace tests
     std::streambuf    *old  = std::cout.rdbuf(sink.rdbuf());
     const int          code = rupture::run_program(arguments, communicator);
     std::cout.rdbuf(old);
+    return code;
+  }
+
+  /**
+   * Run rupture quietly with @p arguments plus "--set S" for each S of
+   * @p settings and <Output directory> = @p directory, which the first
+   * process removes before the run; every process waits for that and for
+   * the end of the run.
+   */
+  inline int
+  run_in(const std::string              &directory,
+         std::vector<std::string>        arguments,
+         const std::vector<std::string> &settings,
+         const MPI_Comm                  communicator = MPI_COMM_WORLD)
+  {
+    arguments.push_back("--set");
+    arguments.push_back("Output directory=" + directory);
+    for (const auto &s : settings)
+      {
+        arguments.push_back("--set");
+        arguments.push_back(s);
+      }
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::filesystem::remove_all(directory);
+    MPI_Barrier(communicator);
+    const int code = run(arguments);
+    MPI_Barrier(communicator);
     return code;
   }
 

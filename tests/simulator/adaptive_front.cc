@@ -121,20 +121,7 @@ main(int argc, char **argv)
   namespace fs   = std::filesystem;
   const auto run = [&](const std::string              &directory,
                        const std::vector<std::string> &settings) {
-    std::vector<std::string> arguments = {input,
-                                          "--set",
-                                          "Output directory=" + directory};
-    for (const auto &s : settings)
-      {
-        arguments.push_back("--set");
-        arguments.push_back(s);
-      }
-    if (root)
-      fs::remove_all(directory);
-    MPI_Barrier(comm);
-    const int code = tests::run(arguments);
-    MPI_Barrier(comm);
-    return code;
+    return tests::run_in(directory, {input}, settings, comm);
   };
 
   const int code_adaptive = run("adaptive", {});

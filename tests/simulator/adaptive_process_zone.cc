@@ -141,22 +141,12 @@ main(int argc, char **argv)
   namespace fs   = std::filesystem;
   const auto run = [&](const std::string              &directory,
                        const std::vector<std::string> &settings) {
-    std::vector<std::string> arguments = {input,
-                                          "--set",
-                                          "Output directory=" + directory,
-                                          "--set",
-                                          "Time integration/End time=1.2"};
-    for (const auto &s : settings)
-      {
-        arguments.push_back("--set");
-        arguments.push_back(s);
-      }
-    if (root)
-      fs::remove_all(directory);
-    MPI_Barrier(comm);
-    const int code = tests::run(arguments);
-    MPI_Barrier(comm);
-    return result_of(directory, code);
+    return result_of(
+      directory,
+      tests::run_in(directory,
+                    {input, "--set", "Time integration/End time=1.2"},
+                    settings,
+                    comm));
   };
 
   const Result front = run("front", {});
