@@ -19,7 +19,8 @@ namespace rupture
                const Friction::State     &old_state,
                const Friction::Interface &law,
                const Point<3>            &x,
-               const double               dt)
+               const double               dt,
+               const double               radiation_damping)
     {
       ContactResponse<dim> r;
       const Tensor<2, dim> nn = outer_product(n, n);
@@ -54,8 +55,13 @@ namespace rupture
       // The strength S(l) after a slip increment l, with its derivatives
       // dS/dl and mu = dS/d pressure (the friction coefficient for laws of
       // one).
+      // The quasi-dynamic radiation damping adds eta l / dt.
       const auto strength = [&](const double l, double &dS, double &mu) {
-        return law.strength(x, old_state, l, dt, pressure, dS, mu);
+        const double S = law.strength(x, old_state, l, dt, pressure, dS, mu);
+        if (radiation_damping == 0)
+          return S;
+        dS += radiation_damping / dt;
+        return S + radiation_damping * l / dt;
       };
       double       mu = 0, dS = 0;
       const double S = strength(0., dS, mu);
@@ -76,7 +82,10 @@ namespace rupture
         }
       // The penalty is the node's impedance to slip: per unit slip rate
       // p_t dt (the law may know that its weakening can exceed it).
-      law.check_uniqueness(x, old_state, pressure, p_t * dt);
+      law.check_uniqueness(x,
+                           old_state,
+                           pressure,
+                           p_t * dt + radiation_damping);
 
       // Slip: find the slip increment l in (0, |T_trial|/p_t] with
       // g(l) = |T_trial| - p_t l - S(l) = 0, by Newton's method
@@ -196,6 +205,7 @@ namespace rupture
                const Friction::State &,
                const Friction::Interface &,
                const Point<3> &,
+               const double,
                const double);
     template ContactResponse<3>
     return_map(const Tensor<1, 3> &,
@@ -207,6 +217,7 @@ namespace rupture
                const Friction::State &,
                const Friction::Interface &,
                const Point<3> &,
+               const double,
                const double);
   } // namespace Fault
 } // namespace rupture

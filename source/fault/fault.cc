@@ -62,6 +62,18 @@ namespace rupture
           "the slip rate of the next step with the state evolved over it "
           "(first order in time; kept for comparison). Laws of the slip "
           "path (slip weakening) are the same with both.");
+        prm.declare_entry(
+          "Radiation damping",
+          "0",
+          Patterns::Double(0),
+          "eta (Pa s/m): the quasi-dynamic approximation of the waves a "
+          "slipping fault radiates (Rice 1993): the shear strength gains "
+          "eta V at slip rate V, as the SCEC SEAS benchmarks' quasi-dynamic "
+          "problems ask with eta = mu / (2 c_s) (half the shear impedance; "
+          "4.62e6 for their rho = 2670 kg/m^3, c_s = 3464 m/s). With "
+          "'penalty contact' in quasi-static phases, where no wave carries "
+          "the energy away; 0 (the default) for none. Not with 'traction at "
+          "split nodes' (explicit dynamics radiates the waves itself).");
         prm.declare_entry("Plus side",
                           "plane",
                           Patterns::Selection("plane|material ids"),
@@ -203,6 +215,14 @@ namespace rupture
         (prm.get("Model") == "traction at split nodes");
       fault->centred_split_node =
         (prm.get("Split-node friction time") == "centred");
+      fault->radiation_damping = prm.get_double("Radiation damping");
+      AssertThrow(!fault->split_node_method || fault->radiation_damping == 0,
+                  ExcMessage("<Fault/Radiation damping> = " +
+                             prm.get("Radiation damping") +
+                             " is for <Fault/Model> = penalty contact (its "
+                             "quasi-static phases): with traction at split "
+                             "nodes the explicit scheme radiates the waves "
+                             "itself. Allowed: 0 with split nodes."));
       const std::string variables = (dim == 2 ? "x,y" : "x,y,z");
       fault->side_by_plane        = (prm.get("Plus side") == "plane");
       AssertThrow(

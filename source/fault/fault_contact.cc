@@ -66,7 +66,8 @@ namespace rupture
                                          pair.state,
                                          *friction_law,
                                          to_3d(pair.location),
-                                         dt);
+                                         dt,
+                                         radiation_damping);
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
           contact_blocks.blocks[&pair - pairs.data()] =
             pair.area * pair.trial.tangent;

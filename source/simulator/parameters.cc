@@ -481,6 +481,15 @@ namespace rupture
                       "loading phase and give the prestress by <Fault/"
                       "Initial traction>, or use <Fault/Model> = penalty "
                       "contact with the implicit scheme."));
+        AssertThrow(
+          fault->radiation_damping_coefficient() == 0 ||
+            time_parameters.scheme == TimeIntegration::Scheme::quasi_static,
+          ExcMessage("<Fault/Radiation damping> stands in for the waves of "
+                     "a quasi-static run (<Time integration/Scheme> = "
+                     "quasi-static); with <Time integration/Scheme> = " +
+                     time_parameters.scheme_name() +
+                     " the waves radiate themselves. Allowed: 0 with a "
+                     "dynamic scheme."));
       }
     mesh_refinement.parse_parameters(prm);
     if (mesh_refinement.enabled())

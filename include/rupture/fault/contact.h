@@ -68,7 +68,10 @@ namespace rupture
      * friction strength mu |T_n| + cohesion when it exceeds it, with mu
      * from @p law as a function of the slip increment of the step. The
      * tangent is derived consistently with that mapping, so Newton's method
-     * converges quadratically.
+     * converges quadratically. With @p radiation_damping eta (Pa s/m) the
+     * strength has the quasi-dynamic term eta l / dt added (the radiation
+     * damping of Rice (1993), the SEAS benchmarks' -eta V), which the
+     * tangent includes.
      */
     template <int dim>
     ContactResponse<dim>
@@ -81,7 +84,8 @@ namespace rupture
                const Friction::State     &old_state,
                const Friction::Interface &law,
                const Point<3>            &x,
-               const double               dt);
+               const double               dt,
+               const double               radiation_damping = 0);
 
     /**
      * Penalty contact at a point whose slip is imposed (the forced-slip

@@ -222,6 +222,12 @@ namespace rupture
       {
         return split_node_method;
       }
+      /// <Fault/Radiation damping> (Pa s/m; 0: none).
+      double
+      radiation_damping_coefficient() const
+      {
+        return radiation_damping;
+      }
 
       /**
        * <Fault/Initial slip velocity>: the velocity of the plus side
@@ -657,8 +663,10 @@ namespace rupture
       /// <Fault/Split-node friction time>: true for the time-centred
       /// update of laws of the slip rate, false for the former one (the
       /// friction of the slip rate over the next step, first order).
-      bool                                 centred_split_node = true;
-      bool                                 side_by_plane      = true;
+      bool centred_split_node = true;
+      /// <Fault/Radiation damping> eta (Pa s/m) of the penalty return map.
+      double                               radiation_damping = 0;
+      bool                                 side_by_plane     = true;
       Point<dim>                           plane_point;
       Tensor<1, dim>                       plane_normal;
       std::vector<types::material_id>      plus_materials;
