@@ -21,57 +21,70 @@
 #include <string>
 #include <vector>
 
-int main(int argc, char **argv) {
+int
+main(int argc, char **argv)
+{
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool root =
-      dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool                               root =
+    dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const std::string prm =
-      std::string(SOURCE_DIR) + "/inputs/antiplane_slab.prm";
-  const double s = 1e-3, D = 2000, D2 = 6000;
+    std::string(SOURCE_DIR) + "/inputs/antiplane_slab.prm";
+  const double              s = 1e-3, D = 2000, D2 = 6000;
   const std::vector<double> xs = {1000, 2000, 3000, 4000, -2000};
-  const char *names[] = {"x1000", "x2000", "x3000", "x4000", "xm2000"};
+  const char *names[]          = {"x1000", "x2000", "x3000", "x4000", "xm2000"};
 
   std::vector<double> worst;
-  for (const unsigned int n : {16u, 32u}) {
-    const int code =
-        tests::run({prm, "--set",
+  for (const unsigned int n : {16u, 32u})
+    {
+      const int code =
+        tests::run({prm,
+                    "--set",
                     "Scene/Box/Number of cells=" + std::to_string(n) + ", 1, " +
-                        std::to_string(n)});
-    if (!root)
-      continue;
-    double in_plane = 0, largest = 0;
-    std::vector<double> uy;
-    for (unsigned int k = 0; k < xs.size(); ++k) {
-      const auto rows = tests::read_statistics(
-          std::string("output-antiplane-slab/") + names[k] + ".dat");
-      const auto &last = rows.back();
-      // t, then displacement and velocity per component.
-      in_plane = std::max({in_plane, std::abs(last[1]), std::abs(last[5])});
-      uy.push_back(last[3]);
-      largest = std::max(largest, std::abs(last[3]));
+                      std::to_string(n)});
+      if (!root)
+        continue;
+      double              in_plane = 0, largest = 0;
+      std::vector<double> uy;
+      for (unsigned int k = 0; k < xs.size(); ++k)
+        {
+          const auto rows = tests::read_statistics(
+            std::string("output-antiplane-slab/") + names[k] + ".dat");
+          const auto &last = rows.back();
+          // t, then displacement and velocity per component.
+          in_plane = std::max({in_plane, std::abs(last[1]), std::abs(last[5])});
+          uy.push_back(last[3]);
+          largest = std::max(largest, std::abs(last[3]));
+        }
+      double error = 0;
+      std::printf("%u cells across (h = %g m), exit code %d:\n",
+                  n,
+                  16000. / n,
+                  code);
+      for (unsigned int k = 0; k < xs.size(); ++k)
+        {
+          const double exact =
+            s / M_PI * (std::atan(xs[k] / D) - std::atan(xs[k] / D2));
+          const double e = std::abs(uy[k] - exact) / std::abs(exact);
+          error          = std::max(error, e);
+          std::printf(
+            "  x = %6.0f m: u_y %.4e m, exact %.4e m, error %.1f %%\n",
+            xs[k],
+            uy[k],
+            exact,
+            100 * e);
+        }
+      worst.push_back(error);
+      std::printf("  in-plane displacement zero: %s; antisymmetric (x = "
+                  "+-2000 m): %s\n",
+                  in_plane <= 1e-12 * largest ? "yes" : "no",
+                  std::abs(uy[1] + uy[4]) <= 1e-9 * largest ? "yes" : "no");
     }
-    double error = 0;
-    std::printf("%u cells across (h = %g m), exit code %d:\n", n, 16000. / n,
-                code);
-    for (unsigned int k = 0; k < xs.size(); ++k) {
-      const double exact =
-          s / M_PI * (std::atan(xs[k] / D) - std::atan(xs[k] / D2));
-      const double e = std::abs(uy[k] - exact) / std::abs(exact);
-      error = std::max(error, e);
-      std::printf("  x = %6.0f m: u_y %.4e m, exact %.4e m, error %.1f %%\n",
-                  xs[k], uy[k], exact, 100 * e);
-    }
-    worst.push_back(error);
-    std::printf("  in-plane displacement zero: %s; antisymmetric (x = "
-                "+-2000 m): %s\n",
-                in_plane <= 1e-12 * largest ? "yes" : "no",
-                std::abs(uy[1] + uy[4]) <= 1e-9 * largest ? "yes" : "no");
-  }
   if (root)
     std::printf("largest error halving h: %.1f %% -> %.1f %%, ratio %s "
                 "(second order: about 4)\n",
-                100 * worst[0], 100 * worst[1],
-                (worst[0] / worst[1] > 3 && worst[0] / worst[1] < 5)
-                    ? "between 3 and 5"
-                    : "outside 3 to 5");
+                100 * worst[0],
+                100 * worst[1],
+                (worst[0] / worst[1] > 3 && worst[0] / worst[1] < 5) ?
+                  "between 3 and 5" :
+                  "outside 3 to 5");
 }
