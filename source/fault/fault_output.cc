@@ -533,9 +533,17 @@ namespace rupture
               out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
                   << "\n";
             }
+          // One pass over the rows (kept on disk): their text, and their
+          // times for the header.
           std::vector<double> times;
-          s.rows.for_each(
-            [&](const std::vector<double> &row) { times.push_back(row[0]); });
+          std::ostringstream  body;
+          body << std::scientific << std::setprecision(7);
+          s.rows.for_each([&](const std::vector<double> &row) {
+            times.push_back(row[0]);
+            for (unsigned int c = 0; c < row.size(); ++c)
+              body << (c ? " " : "") << row[c];
+            body << "\n";
+          });
           out << "# code = rupture\n# code_version = 0.1\n"
               << Output::time_step_lines(times, time_step)
               << "# num_time_steps = " << s.rows.size() << "\n"
@@ -572,12 +580,7 @@ namespace rupture
                   header += " " + name;
                 }
             }
-          out << header << "\n" << std::scientific << std::setprecision(7);
-          s.rows.for_each([&](const std::vector<double> &row) {
-            for (unsigned int c = 0; c < row.size(); ++c)
-              out << (c ? " " : "") << row[c];
-            out << "\n";
-          });
+          out << header << "\n" << body.str();
           directory.write(s.name + ".dat", out.str());
         }
 

@@ -151,10 +151,18 @@ namespace rupture
       const char *axis[3] = {"x", "y", "z"};
       for (const auto &r : receivers)
         {
-          std::ostringstream  out;
+          std::ostringstream out;
+          // One pass over the rows (kept on disk): their text, and their
+          // times for the header.
           std::vector<double> times;
-          r.rows.for_each(
-            [&](const std::vector<double> &row) { times.push_back(row[0]); });
+          std::ostringstream  body;
+          body << std::setprecision(9) << std::scientific;
+          r.rows.for_each([&](const std::vector<double> &row) {
+            times.push_back(row[0]);
+            for (unsigned int i = 0; i < row.size(); ++i)
+              body << (i ? " " : "") << row[i];
+            body << "\n";
+          });
           out << "# problem = rupture receiver (off-fault station) output\n"
               << "# author = rupture\n# code = rupture\n"
               << "# code_version = 0.1\n"
@@ -169,12 +177,7 @@ namespace rupture
           out << "t";
           for (unsigned int c = 0; c < dim; ++c)
             out << " " << axis[c] << "-disp " << axis[c] << "-vel";
-          out << "\n" << std::setprecision(9) << std::scientific;
-          r.rows.for_each([&](const std::vector<double> &row) {
-            for (unsigned int i = 0; i < row.size(); ++i)
-              out << (i ? " " : "") << row[i];
-            out << "\n";
-          });
+          out << "\n" << body.str();
           directory.write(r.name + ".dat", out.str());
         }
     }

@@ -59,27 +59,17 @@ namespace rupture
     void
     Series::keep_in_file(const std::string &path)
     {
-      AssertThrow(
-        keep, dealii::ExcMessage("A series that keeps no rows has no file."));
-      std::vector<double> rows;
-      if (!file.empty())
-        {
-          // The rows of the old file come along.
-          for_each([&](const std::vector<double> &row) {
-            rows.insert(rows.end(), row.begin(), row.end());
-          });
-          std::remove(file.c_str());
-        }
-      else
-        rows.swap(pending);
+      AssertThrow(keep && file.empty(),
+                  dealii::ExcMessage("A series gets its file once, and only "
+                                     "if it keeps its rows."));
       file = path;
       std::ofstream out(file, std::ios::binary | std::ios::trunc);
       AssertThrow(out,
                   dealii::ExcMessage("The file <" + file +
                                      "> (the rows of a time series) cannot be "
                                      "written."));
-      pending.swap(rows);
       out.close();
+      // The rows so far (in memory until now) go to it.
       flush();
     }
 

@@ -39,7 +39,8 @@ namespace rupture
 
       /**
        * From now on keep the rows in the file @p path: the rows so far are
-       * written to it (replacing what it held), later ones appended.
+       * written to it (replacing what it held), later ones appended. Once
+       * per series.
        */
       void
       keep_in_file(const std::string &path);
