@@ -20,7 +20,8 @@ namespace rupture
                const Friction::Interface &law,
                const Point<3>            &x,
                const double               dt,
-               const double               radiation_damping)
+               const double               radiation_damping,
+               const Tensor<1, dim>      *old_shear_traction)
     {
       ContactResponse<dim> r;
       const Tensor<2, dim> nn = outer_product(n, n);
@@ -52,11 +53,32 @@ namespace rupture
       const double trial_norm = trial.norm();
       r.trial_traction        = trial;
 
+      // Centred in time (a law of the slip rate, a step from a known
+      // traction T_n): the mean of the tractions at the step's start and
+      // end along the slip, (T_n e + tau) / 2, meets the strength at the
+      // step's mean slip rate l / dt with the state evolved over half the
+      // step, so that tau = 2 (S_mid(l) + eta l / dt) - T_n e: the
+      // implicit midpoint rule, second order in time. Otherwise the
+      // strength of the state at the step's end meets the end's traction
+      // (first order).
+      const bool centred =
+        old_shear_traction && trial_norm > 0 && law.depends_on_slip_rate();
+      const double old_along =
+        centred ? (*old_shear_traction) * trial / trial_norm : 0.;
+
       // The strength S(l) after a slip increment l, with its derivatives
       // dS/dl and mu = dS/d pressure (the friction coefficient for laws of
-      // one).
+      // one; twice the mid-step coefficient when centred).
       // The quasi-dynamic radiation damping adds eta l / dt.
       const auto strength = [&](const double l, double &dS, double &mu) {
+        if (centred)
+          {
+            const double S_mid =
+              law.strength(x, old_state, 0.5 * l, 0.5 * dt, pressure, dS, mu);
+            dS += 2 * radiation_damping / dt;
+            mu *= 2;
+            return 2 * (S_mid + radiation_damping * l / dt) - old_along;
+          }
         const double S = law.strength(x, old_state, l, dt, pressure, dS, mu);
         if (radiation_damping == 0)
           return S;
@@ -77,15 +99,16 @@ namespace rupture
           r.traction     = normal_traction * n + trial;
           r.tangent      = p_n * nn + p_t * projector;
           r.plastic_slip = old_plastic_slip;
-          r.friction     = mu;
+          r.friction     = centred ? 0.5 * mu : mu;
           return r;
         }
       // The penalty is the node's impedance to slip: per unit slip rate
-      // p_t dt (the law may know that its weakening can exceed it).
+      // p_t dt (the law may know that its weakening can exceed it); half
+      // of it against the mid-step strength when centred.
       law.check_uniqueness(x,
                            old_state,
                            pressure,
-                           p_t * dt + radiation_damping);
+                           (centred ? 0.5 : 1.) * p_t * dt + radiation_damping);
 
       // Slip: find the slip increment l in (0, |T_trial|/p_t] with
       // g(l) = |T_trial| - p_t l - S(l) = 0, by Newton's method
@@ -97,6 +120,17 @@ namespace rupture
         return trial_norm - p_t * l - Sl;
       };
       double lower = 0, upper = trial_norm / p_t, l = 0;
+      // (Centred, the traction may reverse within the step: the root then
+      // lies beyond the increment that frees the spring.)
+      for (unsigned int it = 0; centred && it < 200; ++it)
+        {
+          double dg;
+          if (g(upper, dg) <= 0)
+            break;
+          lower = upper;
+          upper *= 2;
+        }
+      l = lower;
       for (unsigned int it = 0; it < 100; ++it)
         {
           double       dg;
@@ -123,7 +157,7 @@ namespace rupture
 
       r.status              = ContactStatus::slip;
       r.slip_increment      = l;
-      r.friction            = mu;
+      r.friction            = centred ? 0.5 * mu : mu;
       r.friction_derivative = derivative;
       r.traction            = normal_traction * n + tau * e;
       r.plastic_slip        = old_plastic_slip + l * e;
@@ -206,7 +240,8 @@ namespace rupture
                const Friction::Interface &,
                const Point<3> &,
                const double,
-               const double);
+               const double,
+               const Tensor<1, 2> *);
     template ContactResponse<3>
     return_map(const Tensor<1, 3> &,
                const Tensor<1, 3> &,
@@ -218,6 +253,7 @@ namespace rupture
                const Friction::Interface &,
                const Point<3> &,
                const double,
-               const double);
+               const double,
+               const Tensor<1, 3> *);
   } // namespace Fault
 } // namespace rupture

@@ -63,6 +63,20 @@ namespace rupture
           "(first order in time; kept for comparison). Laws of the slip "
           "path (slip weakening) are the same with both.");
         prm.declare_entry(
+          "Penalty friction time",
+          "end of step",
+          Patterns::Selection("end of step|centred"),
+          "With 'penalty contact' and a friction law of the slip rate: "
+          "when the friction is met. 'end of step' (first order in time): "
+          "the traction at the step's end meets the strength at the step's "
+          "mean slip rate with the state evolved over the whole step. "
+          "'centred' (second order, the implicit midpoint rule): the mean "
+          "of the tractions at the step's start and end meets the strength "
+          "at the mean slip rate with the state evolved over half the "
+          "step; the right choice for earthquake cycles with the 'rate and "
+          "state' step controller (doc/verification.md, spring-slider). "
+          "Laws of the slip path (slip weakening) are the same with both.");
+        prm.declare_entry(
           "Radiation damping",
           "0",
           Patterns::Double(0),
@@ -215,6 +229,7 @@ namespace rupture
         (prm.get("Model") == "traction at split nodes");
       fault->centred_split_node =
         (prm.get("Split-node friction time") == "centred");
+      fault->centred_penalty = (prm.get("Penalty friction time") == "centred");
       fault->radiation_damping = prm.get_double("Radiation damping");
       AssertThrow(!fault->split_node_method || fault->radiation_damping == 0,
                   ExcMessage("<Fault/Radiation damping> = " +

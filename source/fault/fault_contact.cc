@@ -57,17 +57,28 @@ namespace rupture
                                                    pair.plastic_slip,
                                                    imposed_slip(pair, 0));
           else
-            pair.trial = return_map<dim>(delta,
-                                         pair.normal,
-                                         pair.initial_traction,
-                                         pair.normal_penalty,
-                                         pair.tangential_penalty,
-                                         pair.plastic_slip,
-                                         pair.state,
-                                         *friction_law,
-                                         to_3d(pair.location),
-                                         dt,
-                                         radiation_damping);
+            {
+              // The shear traction of the step's start, for the centred
+              // friction: the initial one and the springs' stretch (slip
+              // minus plastic slip) of the last accepted step.
+              const Tensor<1, dim> old_shear =
+                pair.initial_traction -
+                (pair.initial_traction * pair.normal) * pair.normal +
+                pair.tangential_penalty * (pair.slip - pair.plastic_slip);
+              pair.trial =
+                return_map<dim>(delta,
+                                pair.normal,
+                                pair.initial_traction,
+                                pair.normal_penalty,
+                                pair.tangential_penalty,
+                                pair.plastic_slip,
+                                pair.state,
+                                *friction_law,
+                                to_3d(pair.location),
+                                dt,
+                                radiation_damping,
+                                centred_penalty ? &old_shear : nullptr);
+            }
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
           contact_blocks.blocks[&pair - pairs.data()] =
             pair.area * pair.trial.tangent;

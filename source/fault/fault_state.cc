@@ -332,6 +332,24 @@ namespace rupture
 
 
     template <int dim>
+    double
+    Fault<dim>::state_evolution_time() const
+    {
+      double shortest = std::numeric_limits<double>::infinity();
+      for (const auto &pair : pairs)
+        if (!pair.hanging && pair.state.slip_rate > 0)
+          {
+            const double L =
+              friction_law->slip_scale(to_3d(pair.location), pair.state);
+            if (std::isfinite(L))
+              shortest = std::min(shortest, L / pair.state.slip_rate);
+          }
+      return dealii::Utilities::MPI::min(shortest, communicator);
+    }
+
+
+
+    template <int dim>
     Statistics
     Fault<dim>::statistics() const
     {

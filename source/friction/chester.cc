@@ -320,6 +320,14 @@ namespace rupture
 
 
     double
+    Chester::slip_scale(const Point<3> &x, const State &state) const
+    {
+      return LawUtilities::constants(functions, x, state)[2];
+    }
+
+
+
+    double
     Chester::process_zone_width(const Point<3> &x,
                                 const State    &state,
                                 const double    pressure,

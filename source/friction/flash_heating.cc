@@ -270,6 +270,14 @@ namespace rupture
 
 
     double
+    FlashHeating::slip_scale(const Point<3> &x, const State &state) const
+    {
+      return LawUtilities::constants(functions, x, state)[2];
+    }
+
+
+
+    double
     FlashHeating::process_zone_width(const Point<3> &x,
                                      const State    &state,
                                      const double    pressure,

@@ -43,6 +43,14 @@ namespace rupture
 
 
     double
+    Interface::slip_scale(const Point<3> &, const State &) const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
+
+
+
+    double
     Interface::process_zone_width(const Point<3> &,
                                   const State &,
                                   const double,

@@ -317,6 +317,14 @@ namespace rupture
 
 
     double
+    RateAndState::slip_scale(const Point<3> &x, const State &state) const
+    {
+      return LawUtilities::constants(functions, x, state)[2];
+    }
+
+
+
+    double
     RateAndState::process_zone_width(const Point<3> &x,
                                      const State    &state,
                                      const double    pressure,

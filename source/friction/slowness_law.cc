@@ -244,6 +244,14 @@ namespace rupture
 
 
     double
+    SlownessLaw::slip_scale(const Point<3> &x, const State &state) const
+    {
+      return LawUtilities::constants(functions, x, state)[3];
+    }
+
+
+
+    double
     SlownessLaw::process_zone_width(const Point<3> &x,
                                     const State    &state,
                                     const double    pressure,

@@ -262,6 +262,16 @@ namespace rupture
 
 
     double
+    TwoStateVariables::slip_scale(const Point<3> &x, const State &state) const
+    {
+      // The shorter of the two states' distances.
+      const Constants c = LawUtilities::constants(functions, x, state);
+      return std::min(c[4], c[5]);
+    }
+
+
+
+    double
     TwoStateVariables::process_zone_width(const Point<3> &x,
                                           const State    &state,
                                           const double    pressure,

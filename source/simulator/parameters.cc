@@ -251,17 +251,19 @@ namespace rupture
                         "creeping at 1e-20 m/s). A step in "
                         "which every fault node stuck in the last two "
                         "iterations is linear and needs only the first.");
-      prm.declare_entry("Maximum step cuts",
-                        "4",
-                        Patterns::Integer(0, 20),
-                        "When Newton's method fails in an implicit step, "
-                        "the step is redone as two half steps, recursively, "
-                        "up to this many times; then the run stops with a "
-                        "diagnosis. 0 stops at the first failure. After a "
-                        "cut, the following steps are taken as sub-steps of "
-                        "the size that converged, which double again after "
-                        "two steps without a cut; the output times stay "
-                        "those of <Time integration/Time step>.");
+      prm.declare_entry(
+        "Maximum step cuts",
+        "4",
+        Patterns::Integer(0, 20),
+        "When Newton's method fails in an implicit or "
+        "quasi-static step, "
+        "the step is redone as two half steps, recursively, "
+        "up to this many times; then the run stops with a "
+        "diagnosis. 0 stops at the first failure. After a "
+        "cut, the implicit scheme's following steps are taken as sub-steps of "
+        "the size that converged, which double again after "
+        "two steps without a cut; the output times stay "
+        "those of <Time integration/Time step>.");
       prm.declare_entry("Maximum Newton iterations",
                         "25",
                         Patterns::Integer(1),

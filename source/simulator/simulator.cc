@@ -565,12 +565,22 @@ namespace rupture
     TimeIntegration::PhaseClock &clock = state.clock;
     const double start = clock.begin_phase(state.time, steps_done);
     // (A phase whose mesh changed counts the steps of its segments.)
-    unsigned int n_steps = static_cast<unsigned int>(
-      clock.steps_of_phase(duration, state.time_step));
+    // A step controller other than "fixed" chooses each step: the loop
+    // then goes by time, one step at a time (n_steps is the step after
+    // the current one until the last).
+    const bool   adaptive = integrator->adaptive_steps();
+    unsigned int n_steps  = adaptive ?
+                              steps_done + 1 :
+                              static_cast<unsigned int>(
+                               clock.steps_of_phase(duration, state.time_step));
     pcout << "   Time step " << std::setprecision(6) << state.time_step << " s"
-          << Utilities::readable_time(state.time_step, duration) << ", "
-          << n_steps
-          << " steps to t = " << (start - state.clock.dynamic_start) + duration
+          << Utilities::readable_time(state.time_step, duration) << ", ";
+    if (adaptive)
+      pcout << "then chosen by the '" << time_parameters.step_controller.name
+            << "' controller,";
+    else
+      pcout << n_steps;
+    pcout << " steps to t = " << (start - state.clock.dynamic_start) + duration
           << " s"
           << Utilities::readable_time((start - state.clock.dynamic_start) +
                                         duration,
@@ -592,9 +602,23 @@ namespace rupture
     for (unsigned int i = steps_done + 1; i <= n_steps; ++i)
       {
         ++state.step;
-        // The time since the start of the dynamic phase, without the
-        // round-off of the absolute time after a long loading phase.
-        state.time = clock.enter_step(i, n_steps, duration, state.time_step);
+        if (adaptive)
+          {
+            // The controller's step, the last one shortened (or a little
+            // lengthened) to end at the phase's end.
+            const double now  = state.time;
+            const double left = (clock.phase_start_time + duration) - now;
+            const double dt   = integrator->next_time_step();
+            const bool   last = (left <= dt * (1 + 1e-9));
+            state.time_step   = last ? left : dt;
+            n_steps           = last ? i : i + 1;
+            state.time        = clock.enter_adaptive_step(
+              i, now, state.time_step, duration, last);
+          }
+        else
+          // The time since the start of the dynamic phase, without the
+          // round-off of the absolute time after a long loading phase.
+          state.time = clock.enter_step(i, n_steps, duration, state.time_step);
         if (fault)
           fault->set_time(state.time);
 
@@ -657,11 +681,19 @@ namespace rupture
               }
             if (!test_mode)
               {
+                // (Adaptive steps: the fraction of the phase's time.)
                 const double elapsed = MPI_Wtime() - cost.wall_time_start;
-                const double left    = elapsed / state.step * (n_steps - i);
+                const double done =
+                  adaptive ?
+                    std::max((state.time - clock.phase_start_time) / duration,
+                             1e-300) :
+                    double(i) / n_steps;
+                const double left = adaptive ?
+                                      elapsed * (1 - done) / done :
+                                      elapsed / state.step * (n_steps - i);
                 pcout << "  [" << std::fixed << std::setprecision(0)
-                      << 100. * i / n_steps << "%, " << std::setprecision(1)
-                      << left << " s left]";
+                      << 100. * done << "%, " << std::setprecision(1) << left
+                      << " s left]";
                 if (current_scheme() !=
                     TimeIntegration::Scheme::explicit_central_difference)
                   pcout << "\n    Linear solver: "
@@ -682,7 +714,7 @@ namespace rupture
                                  state.time_step) ||
              fault_refinement->front_outside_fine_cells(
                state.clock.phase_time)) &&
-            adapt_mesh(duration, requested_time_step(), i))
+            adapt_mesh(duration, requested_time_step(), i) && !adaptive)
           n_steps = static_cast<unsigned int>(
             clock.steps_of_phase(duration, state.time_step));
         // Every <Interval> steps, when write_step_output() found one asked

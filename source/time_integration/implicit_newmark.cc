@@ -53,7 +53,7 @@ namespace rupture
 
     template <int dim>
     void
-    ImplicitNewmark<dim>::save(BinaryIO::Records &records) const
+    ImplicitNewmark<dim>::save_scheme(BinaryIO::Records &records) const
     {
       records["integrator/substep depth"]     = substep_depth;
       records["integrator/steps without cut"] = steps_without_cut;
@@ -63,7 +63,7 @@ namespace rupture
 
     template <int dim>
     void
-    ImplicitNewmark<dim>::load(const BinaryIO::Records &records)
+    ImplicitNewmark<dim>::load_scheme(const BinaryIO::Records &records)
     {
       substep_depth = static_cast<unsigned int>(
         BinaryIO::record(records, "integrator/substep depth"));

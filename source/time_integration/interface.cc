@@ -3,10 +3,25 @@
 #include <rupture/time_integration/implicit_newmark.h>
 #include <rupture/time_integration/quasi_static.h>
 
+#include <limits>
+
 namespace rupture
 {
   namespace TimeIntegration
   {
+    template <int dim>
+    double
+    Interface<dim>::next_time_step() const
+    {
+      StepInputs inputs;
+      inputs.state_evolution_time = context.fault ?
+                                      context.fault->state_evolution_time() :
+                                      std::numeric_limits<double>::infinity();
+      return controller->next(inputs);
+    }
+
+
+
     template <int dim>
     void
     Interface<dim>::accept_step(const VectorType &old_displacement,
@@ -29,6 +44,7 @@ namespace rupture
           s.energy.contact_force = force;
           s.fault->commit(s.state.time_step, s.state.time);
         }
+      controller->accept(s.state.time_step);
 
       // Work of the applied forces by the trapezoidal rule: loads on free
       // DoFs, reactions (load minus residual) on kinematically held ones.

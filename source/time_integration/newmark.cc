@@ -57,6 +57,7 @@ namespace rupture
           "Only for stability studies: such a run blows up, and is stopped "
           "as soon as its energy balance error reaches half of the energy "
           "in play or a value is no longer finite.");
+        StepControllerParameters::declare_parameters(prm);
         prm.enter_subsection("Loading phase");
         {
           prm.declare_entry(
@@ -110,6 +111,7 @@ namespace rupture
         courant_fraction         = prm.get_double("Courant fraction");
         end_time                 = prm.get_double("End time");
         allow_unstable_time_step = prm.get_bool("Allow unstable time step");
+        step_controller.parse_parameters(prm);
         prm.enter_subsection("Loading phase");
         loading_phase     = prm.get_bool("Enabled");
         loading_time_step = prm.get_double("Time step");
@@ -129,6 +131,23 @@ namespace rupture
                   ExcMessage("<Time integration/End time> is " +
                              std::to_string(end_time) +
                              ", but it must be > 0 (s)."));
+      // The adaptive controllers step quasi-static runs so far: a new step
+      // of the implicit scheme costs a new matrix, and the explicit one has
+      // its stable step.
+      AssertThrow(step_controller.name == "fixed" ||
+                    (scheme == Scheme::quasi_static && !loading_phase),
+                  ExcMessage(
+                    "<Time integration/Step controller/Controller> = " +
+                    step_controller.name +
+                    " works with <Time integration/"
+                    "Scheme> = quasi-static (without a <Loading phase>) "
+                    "only, but " +
+                    (scheme == Scheme::quasi_static ?
+                       std::string("the run has a loading phase") :
+                       "<Scheme> is '" + scheme_name() + "'") +
+                    ". Allowed: 'fixed' for this run, or a quasi-static run "
+                    "(with <Fault/Radiation damping> for quasi-dynamic "
+                    "cycles)."));
       if (scheme == Scheme::explicit_central_difference)
         {
           AssertThrow(time_step >= 0,

@@ -1,4 +1,7 @@
+#include <rupture/fault/fault.h>
 #include <rupture/time_integration/quasi_static.h>
+
+#include <functional>
 
 namespace rupture
 {
@@ -25,6 +28,60 @@ namespace rupture
     template <int dim>
     void
     QuasiStatic<dim>::step()
+    {
+      // Try the step; if Newton's method fails, restore the displacement
+      // (the fault state changes only when a step converged) and redo it
+      // as two half steps, recursively, up to <Solver/Maximum step cuts>
+      // times. The step controller hears of each cut (a controller that
+      // adapts then goes on from the half step that converged).
+      using Solver::NewtonFailure;
+      Context<dim>      &s   = this->context;
+      const double       end = s.state.time, dt = s.state.time_step;
+      const unsigned int cuts = s.newton_parameters.max_step_cuts;
+      std::function<void(double, double, unsigned int)> attempt =
+        [&](const double t_start, const double h, const unsigned int depth) {
+          const VectorType u(s.state.displacement);
+          s.state.time_step = h;
+          s.state.time      = t_start + h;
+          if (s.fault)
+            s.fault->set_time(s.state.time);
+          s.newton.may_cut = (depth < cuts);
+          try
+            {
+              substep();
+              s.newton.may_cut = false;
+            }
+          catch (const NewtonFailure &failure)
+            {
+              s.newton.may_cut = false;
+              if (depth == cuts)
+                throw NewtonFailure(
+                  std::string(failure.what()) +
+                    (cuts > 0 ? " The step was cut " + std::to_string(depth) +
+                                  " times (<Solver/Maximum step "
+                                  "cuts>)." :
+                                std::string(" No step was cut (<Solver/"
+                                            "Maximum step cuts> = 0).")),
+                  failure.reason);
+              s.state.displacement = u;
+              s.pcout << "    Newton failed with dt = " << h << " s ("
+                      << failure.reason << "): the step is cut in half\n";
+              ++s.newton.n_step_cuts;
+              this->controller->reject(h);
+              attempt(t_start, h / 2, depth + 1);
+              attempt(t_start + h / 2, h / 2, depth + 1);
+            }
+        };
+      attempt(end - dt, dt, 0);
+      s.state.time_step = dt;
+      s.state.time      = end;
+    }
+
+
+
+    template <int dim>
+    void
+    QuasiStatic<dim>::substep()
     {
       Context<dim>      &s = this->context;
       TimerOutput::Scope t(s.timer, "Quasi-static step");

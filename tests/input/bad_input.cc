@@ -296,6 +296,20 @@ main(int argc, char **argv)
          "Fault/Plane point=0, 500",
          "--set",
          "Fault/Plane normal=0, 1"});
+  check("an adaptive step controller with a dynamic scheme",
+        {"valid.prm",
+         "--set",
+         "Time integration/Step controller/Controller=rate and state"});
+  check("a step controller's bounds in the wrong order",
+        {"valid.prm",
+         "--set",
+         "Time integration/Step controller/Minimum time step=10",
+         "--set",
+         "Time integration/Step controller/Maximum time step=1"});
+  check("a state evolution fraction above 1",
+        {"valid.prm",
+         "--set",
+         "Time integration/Step controller/State evolution fraction=2"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

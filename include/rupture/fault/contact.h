@@ -71,7 +71,11 @@ namespace rupture
      * converges quadratically. With @p radiation_damping eta (Pa s/m) the
      * strength has the quasi-dynamic term eta l / dt added (the radiation
      * damping of Rice (1993), the SEAS benchmarks' -eta V), which the
-     * tangent includes.
+     * tangent includes. Given the shear traction @p old_shear_traction at
+     * the step's start, a law of the slip rate is met at the middle of
+     * the step (the mean traction against the strength at the mean slip
+     * rate, the state evolved over half the step: second order in time);
+     * without it at the step's end (first order).
      */
     template <int dim>
     ContactResponse<dim>
@@ -85,7 +89,8 @@ namespace rupture
                const Friction::Interface &law,
                const Point<3>            &x,
                const double               dt,
-               const double               radiation_damping = 0);
+               const double               radiation_damping  = 0,
+               const Tensor<1, dim>      *old_shear_traction = nullptr);
 
     /**
      * Penalty contact at a point whose slip is imposed (the forced-slip

@@ -432,6 +432,16 @@ namespace rupture
       statistics() const;
 
       /**
+       * The shortest time over which a pair's friction state evolves, over
+       * all ranks: the smallest L / V of the not hanging pairs, with the
+       * law's slip scale L (Friction::Interface::slip_scale()) and the slip
+       * rate V of the last accepted step. Infinite where no pair slips or
+       * the law has no state. Collective.
+       */
+      double
+      state_evolution_time() const;
+
+      /**
        * The locations of the locally owned pairs that slip faster than
        * @p rate, or whose rupture (NodeState::rupture_time) is less than
        * @p memory before @p time (both since the start of the dynamic
@@ -664,6 +674,8 @@ namespace rupture
       /// update of laws of the slip rate, false for the former one (the
       /// friction of the slip rate over the next step, first order).
       bool centred_split_node = true;
+      /// <Penalty friction time> = centred.
+      bool centred_penalty = false;
       /// <Fault/Radiation damping> eta (Pa s/m) of the penalty return map.
       double                               radiation_damping = 0;
       bool                                 side_by_plane     = true;

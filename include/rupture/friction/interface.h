@@ -264,6 +264,16 @@ namespace rupture
                          const double    shear_modulus) const;
 
       /**
+       * The slip (m) over which the law's state evolves at @p x (the
+       * characteristic slip distance L of rate and state, the shorter of
+       * two), NaN for laws without an evolving state. L / V is the time over
+       * which a fault slipping at V forgets its state: the rate-and-state
+       * step controller takes a fraction of it.
+       */
+      virtual double
+      slip_scale(const Point<3> &x, const State &state) const;
+
+      /**
        * Whether process_zone_width() gives an estimate: a mesh that
        * refines to the process zone needs it.
        */

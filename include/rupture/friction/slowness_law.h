@@ -77,6 +77,9 @@ namespace rupture
                          const double    pressure,
                          const double    shear_modulus) const override;
 
+      double
+      slip_scale(const Point<3> &x, const State &state) const override;
+
       bool
       has_process_zone_width() const override
       {

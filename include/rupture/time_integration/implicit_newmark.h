@@ -31,9 +31,9 @@ namespace rupture
       step() override;
 
       void
-      save(BinaryIO::Records &records) const override;
+      save_scheme(BinaryIO::Records &records) const override;
       void
-      load(const BinaryIO::Records &records) override;
+      load_scheme(const BinaryIO::Records &records) override;
 
     private:
       /// Build the effective stiffness for steps of @p h.

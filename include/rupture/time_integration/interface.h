@@ -27,8 +27,16 @@ namespace rupture
     public:
       using VectorType = dealii::TrilinosWrappers::MPI::Vector;
 
+      /**
+       * An integrator working with @p context, its steps chosen by the
+       * controller <Time integration/Step controller> names, starting from
+       * the state's current time step (the phase's).
+       */
       explicit Interface(const Context<dim> &context)
         : context(context)
+        , controller(
+            create_step_controller(context.time_parameters.step_controller,
+                                   context.state.time_step))
       {}
       virtual ~Interface() = default;
 
@@ -51,20 +59,53 @@ namespace rupture
       step() = 0;
 
       /**
-       * What a checkpoint keeps of the integrator between steps (the
-       * implicit scheme's sub-stepping after step cuts), as records named
-       * "integrator/...", and its restore after prepare(). Nothing by
-       * default.
+       * Whether the steps change from step to step (a controller other than
+       * "fixed"): the time loop then asks next_time_step() before each step
+       * and goes by time, not by a number of steps.
        */
-      virtual void
-      save(BinaryIO::Records &) const
-      {}
-      virtual void
-      load(const BinaryIO::Records &)
-      {}
+      bool
+      adaptive_steps() const
+      {
+        return controller->adaptive();
+      }
+
+      /**
+       * The step the controller asks for next, from the fault's state
+       * after the last accepted step. Collective.
+       */
+      double
+      next_time_step() const;
+
+      /**
+       * What a checkpoint keeps of the integrator between steps (its step
+       * controller's state, the implicit scheme's sub-stepping after step
+       * cuts), as records named "integrator/...", and its restore after
+       * prepare().
+       */
+      void
+      save(BinaryIO::Records &records) const
+      {
+        controller->save(records);
+        save_scheme(records);
+      }
+      void
+      load(const BinaryIO::Records &records)
+      {
+        controller->load(records);
+        load_scheme(records);
+      }
 
     protected:
-      Context<dim> context;
+      Context<dim>                    context;
+      std::unique_ptr<StepController> controller;
+
+      /// The scheme's own part of save() and load(): nothing by default.
+      virtual void
+      save_scheme(BinaryIO::Records &) const
+      {}
+      virtual void
+      load_scheme(const BinaryIO::Records &)
+      {}
 
       /**
        * After the solve of a step from @p old_displacement: accept the

@@ -1,6 +1,8 @@
 #ifndef rupture_time_integration_newmark_h
 #define rupture_time_integration_newmark_h
 
+#include <rupture/time_integration/step_controller.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -52,6 +54,8 @@ namespace rupture
       double loading_time_step;
       double loading_end_time;
       bool   stop_loading_when_weakening;
+      /// How the steps of a phase are chosen.
+      StepControllerParameters step_controller;
 
       std::string
       scheme_name() const;

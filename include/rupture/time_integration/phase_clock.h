@@ -66,6 +66,7 @@ namespace rupture
           {
             segment_start_time = start;
             segment_first_step = 0;
+            compensation       = 0;
           }
         return start;
       }
@@ -125,6 +126,44 @@ namespace rupture
         return (i == n_steps) ?
                  end_time :
                  segment_start_time + (i - segment_first_step) * dt;
+      }
+
+      /**
+       * The round-off that adding steps of changing size to the absolute
+       * time lost so far (compensated summation), for the adaptive steps.
+       */
+      double compensation = 0;
+
+      /**
+       * Enter step @p i of a phase of @p duration whose steps a controller
+       * chooses: the step of @p dt starts at the absolute time @p now and
+       * is a segment of its own. The last step (@p last) ends at the
+       * phase's end time exactly; the others add @p dt to @p now by
+       * compensated (Kahan) summation, so that a million steps of
+       * milliseconds after years keep their sum. Returns the absolute time
+       * at the end of the step.
+       */
+      double
+      enter_adaptive_step(const unsigned int i,
+                          const double       now,
+                          const double       dt,
+                          const double       duration,
+                          const bool         last)
+      {
+        start_segment(now, i - 1);
+        steps_in_phase = i;
+        double end     = phase_start_time + duration;
+        if (last)
+          compensation = 0;
+        else
+          {
+            const double add = dt - compensation;
+            end              = now + add;
+            compensation     = (end - now) - add;
+          }
+        phase_time = (phase_start_time - dynamic_start) +
+                     (last ? duration : end - phase_start_time);
+        return end;
       }
 
       /**

@@ -11,7 +11,8 @@ namespace rupture
      * Quasi-static steps without inertia: K u + F_contact(u) = f at each
      * time (the paper's loading phase), solved with Newton's method when a
      * penalty fault is present. The velocity written is the rate of the
-     * loading, (u - u_old)/dt.
+     * loading, (u - u_old)/dt. A step whose Newton iteration fails is
+     * cut in half, recursively (<Solver/Maximum step cuts>).
      */
     template <int dim>
     class QuasiStatic : public Interface<dim>
@@ -28,6 +29,9 @@ namespace rupture
       step() override;
 
     private:
+      /// One step of the state's time step, ending at its time.
+      void
+      substep();
     };
   } // namespace TimeIntegration
 } // namespace rupture

@@ -50,6 +50,10 @@ namespace rupture
         records["time/steps in phase"]     = clock.steps_in_phase;
         records["time/segment start time"] = clock.segment_start_time;
         records["time/segment first step"] = clock.segment_first_step;
+        // (Adaptive steps only: the fixed steps' checkpoints stay as they
+        // were.)
+        if (clock.compensation != 0)
+          records["time/compensation"] = clock.compensation;
       }
       void
       load(const BinaryIO::Records &records)
@@ -72,6 +76,9 @@ namespace rupture
         clock.segment_first_step = (first != records.end()) ?
                                      static_cast<unsigned int>(first->second) :
                                      0;
+        const auto compensation  = records.find("time/compensation");
+        clock.compensation =
+          (compensation != records.end()) ? compensation->second : 0;
       }
     };
   } // namespace TimeIntegration
