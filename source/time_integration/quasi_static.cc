@@ -45,15 +45,16 @@ namespace rupture
           s.state.time      = t_start + h;
           if (s.fault)
             s.fault->set_time(s.state.time);
-          s.newton.may_cut = (depth < cuts);
+          // (Newton iterates on through a stall here, to its iteration
+          // limit: only a step that fails outright is cut, so a run that
+          // converged before is the same.)
+          s.newton.may_cut = false;
           try
             {
               substep();
-              s.newton.may_cut = false;
             }
           catch (const NewtonFailure &failure)
             {
-              s.newton.may_cut = false;
               if (depth == cuts)
                 throw NewtonFailure(
                   std::string(failure.what()) +
