@@ -70,6 +70,7 @@ namespace rupture
           "end only. The fault's files scale with the fault, not with the "
           "mesh, so a large model can write its fault every step and its "
           "volume rarely.");
+        EventCatalogue<dim>::declare_parameters(prm);
       }
       prm.leave_subsection();
       prm.leave_subsection();
@@ -87,6 +88,7 @@ namespace rupture
       strike_text   = prm.get("Along-strike direction");
       origin_text   = dealii::Utilities::trim(prm.get("Down-dip origin"));
       interval_text = dealii::Utilities::trim(prm.get("Output interval"));
+      events.parse_parameters(prm);
       prm.leave_subsection();
       if (!interval_text.empty())
         surface_interval(0);
@@ -342,8 +344,9 @@ namespace rupture
 
     template <int dim>
     void
-    FaultOutput<dim>::record(const Fault<dim> &fault, const double time)
+    FaultOutput<dim>::record(Fault<dim> &fault, const double time)
     {
+      events.record(fault, time);
       if (stations.empty())
         return;
       const auto records = fault.gather(&station_keys);
@@ -518,6 +521,7 @@ namespace rupture
                                    const double       time_step,
                                    const bool         test_mode) const
     {
+      events.write(fault, directory);
       const auto records = fault.gather();
       if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
         return;
@@ -614,6 +618,10 @@ namespace rupture
       BinaryIO::write(out, static_cast<std::uint64_t>(stations.size()));
       for (const auto &s : stations)
         s.rows.save(out);
+      // (Only with a catalogue: the checkpoints of runs without one are as
+      // they were.)
+      if (events.enabled())
+        events.save(out);
     }
 
 
@@ -630,6 +638,8 @@ namespace rupture
                              "stations than <Fault/Output/Stations> gives."));
       for (auto &s : stations)
         s.rows.load(in);
+      if (events.enabled())
+        events.load(in);
     }
 
 

@@ -350,6 +350,95 @@ namespace rupture
 
 
     template <int dim>
+    std::pair<double, Point<dim>>
+    Fault<dim>::fastest_pair() const
+    {
+      // (MPI_MAXLOC over the ranks' largest rates, then the owner's
+      // location.)
+      struct
+      {
+        double rate;
+        int    rank;
+      } mine{-1.,
+             static_cast<int>(
+               dealii::Utilities::MPI::this_mpi_process(communicator))},
+        largest;
+      Point<dim> where;
+      for (const auto &pair : pairs)
+        if (!pair.hanging && pair.rupture_rate > mine.rate)
+          {
+            mine.rate = pair.rupture_rate;
+            where     = pair.location;
+          }
+      MPI_Allreduce(
+        &mine, &largest, 1, MPI_DOUBLE_INT, MPI_MAXLOC, communicator);
+      double coordinates[dim];
+      for (unsigned int d = 0; d < dim; ++d)
+        coordinates[d] = where[d];
+      MPI_Bcast(coordinates, dim, MPI_DOUBLE, largest.rank, communicator);
+      for (unsigned int d = 0; d < dim; ++d)
+        where[d] = coordinates[d];
+      return {std::max(largest.rate, 0.), where};
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::start_event()
+    {
+      for (auto &pair : pairs)
+        {
+          pair.event_slip      = pair.slip;
+          pair.event_peak_rate = pair.rupture_rate;
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    Fault<dim>::track_event()
+    {
+      for (auto &pair : pairs)
+        pair.event_peak_rate =
+          std::max(pair.event_peak_rate, pair.rupture_rate);
+    }
+
+
+
+    template <int dim>
+    EventSummary<dim>
+    Fault<dim>::event_summary(const double threshold) const
+    {
+      EventSummary<dim> s;
+      double            sums[3] = {0, 0, 0}; // moment, area, area x slip
+      for (const auto &pair : pairs)
+        if (!pair.hanging)
+          {
+            const double slip = (pair.slip - pair.event_slip).norm();
+            sums[0] += pair.shear_modulus * pair.area * slip;
+            s.peak_rate = std::max(s.peak_rate, pair.event_peak_rate);
+            if (pair.event_peak_rate >= threshold)
+              {
+                sums[1] += pair.area;
+                sums[2] += pair.area * slip;
+                s.largest_slip = std::max(s.largest_slip, slip);
+              }
+          }
+      dealii::Utilities::MPI::sum(sums, communicator, sums);
+      s.moment    = sums[0];
+      s.area      = sums[1];
+      s.slip_area = sums[2];
+      s.peak_rate = dealii::Utilities::MPI::max(s.peak_rate, communicator);
+      s.largest_slip =
+        dealii::Utilities::MPI::max(s.largest_slip, communicator);
+      return s;
+    }
+
+
+
+    template <int dim>
     Statistics
     Fault<dim>::statistics() const
     {
@@ -477,6 +566,9 @@ namespace rupture
           v.push_back(t.friction_derivative);
           v.push_back(t.unstable_softening);
           NodeState<dim>::append(v, pair.trial_slip);
+          // (Added with the event catalogue: older checkpoints end here.)
+          NodeState<dim>::append(v, pair.event_slip);
+          v.push_back(pair.event_peak_rate);
           BinaryIO::write(out, v);
         }
     }
@@ -562,6 +654,12 @@ namespace rupture
           t.friction_derivative = v.at(i++);
           t.unstable_softening  = v.at(i++) != 0;
           pair.trial_slip       = NodeState<dim>::take(v, i);
+          // (Checkpoints before the event catalogue end here.)
+          if (i + dim + 1 <= v.size())
+            {
+              pair.event_slip      = NodeState<dim>::take(v, i);
+              pair.event_peak_rate = v.at(i++);
+            }
         }
     }
 

@@ -496,6 +496,11 @@ namespace rupture
     mesh_refinement.parse_parameters(prm);
     if (mesh_refinement.enabled())
       {
+        AssertThrow(!fault_output || !fault_output->has_event_catalogue(),
+                    ExcMessage("<Fault/Output/Event catalogue> = true cannot "
+                               "be combined with <Mesh refinement> yet (the "
+                               "slip at an event's start is not carried to "
+                               "a new mesh). Use one of them."));
         AssertThrow(!linear_solver.multigrid(),
                     ExcMessage("<Solver/Preconditioner> = multigrid cannot "
                                "follow a mesh that <Mesh refinement/Criteria> "

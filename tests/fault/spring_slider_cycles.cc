@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -66,13 +67,24 @@ namespace
     return {dV / V, dtheta / theta};
   }
 
+  // The slip of the slider in state y at time t: tau0 + k (V_p t - delta)
+  // = sigma F + eta V.
+  double
+  slip_of(const double t, const Y &y)
+  {
+    double F, F_V, F_theta;
+    friction(std::exp(y[0]), std::exp(y[1]), F, F_V, F_theta);
+    return Vp * t + (tau0 - sigma * F - eta * std::exp(y[0])) / k;
+  }
+
   // Dormand-Prince 5(4), adaptive, from t = 0 to end: the accepted steps'
-  // times and slip rates.
+  // times, slip rates and slips.
   void
   integrate(Y                    y,
             const double         end,
             std::vector<double> &t,
-            std::vector<double> &V)
+            std::vector<double> &V,
+            std::vector<double> &D)
   {
     static const double c[7]    = {0, 1. / 5, 3. / 10, 4. / 5, 8. / 9, 1, 1};
     static const double A[7][6] = {
@@ -94,6 +106,7 @@ namespace
     double time = 0, h = 1;
     t.push_back(time);
     V.push_back(std::exp(y[0]));
+    D.push_back(slip_of(time, y));
     while (time < end)
       {
         h = std::min(h, end - time);
@@ -124,6 +137,7 @@ namespace
             time += h;
             t.push_back(time);
             V.push_back(std::exp(y[0]));
+            D.push_back(slip_of(time, y));
           }
         h *= std::clamp(0.9 * std::pow(std::max(error, 1e-30), -0.2), 0.2, 5.);
       }
@@ -188,14 +202,14 @@ main(int argc, char **argv)
       friction(std::exp(m), theta0, F, F_V, F_theta);
       (sigma * F + eta * std::exp(m) < tau0 ? lower : upper) = m;
     }
-  std::vector<double> t, V;
-  integrate({0.5 * (lower + upper), std::log(theta0)}, end, t, V);
+  std::vector<double> t, V, D;
+  integrate({0.5 * (lower + upper), std::log(theta0)}, end, t, V, D);
   const Events                reference = find_events(t, V);
   const std::array<double, 2> exact     = cycle(reference);
 
   const std::string prm =
     std::string(SOURCE_DIR) + "/inputs/spring_slider_cycles.prm";
-  tests::run_in("centred", {prm}, {});
+  tests::run_in("centred", {prm}, {"Fault/Output/Event catalogue=true"});
   const auto rows = tests::read_statistics("centred/statistics");
   // 0-based columns: time, time step, maximum slip rate.
   std::vector<double> fe_t, fe_V;
@@ -239,5 +253,67 @@ main(int argc, char **argv)
               peak_error < 1e-3 ? "yes" : "no");
   std::printf("  steps span more than 9 decades: %s\n",
               dt_max / dt_min > 1e9 ? "yes" : "no");
+
+  // The event catalogue against the slider: each event's slip from the
+  // first step at 1 mm/s or more to the first below (the slider's slip at
+  // the crossings, interpolated); the fault of 100 m slips as one.
+  std::vector<double> slips;
+  {
+    const auto at = [&](const unsigned int i, const double rate) {
+      const double w = (std::log(rate) - std::log(V[i - 1])) /
+                       (std::log(V[i]) - std::log(V[i - 1]));
+      return D[i - 1] + w * (D[i] - D[i - 1]);
+    };
+    double start = 0;
+    for (unsigned int i = 1; i < t.size(); ++i)
+      if (V[i - 1] < 1e-3 && V[i] >= 1e-3)
+        start = at(i, 1e-3);
+      else if (V[i - 1] >= 1e-3 && V[i] < 1e-3)
+        slips.push_back(at(i, 1e-3) - start);
+  }
+  std::vector<std::vector<double>> catalogue;
+  {
+    std::istringstream in(tests::read_file("centred/events.csv"));
+    std::string        line;
+    std::getline(in, line); // the comment
+    std::getline(in, line); // the names
+    while (std::getline(in, line))
+      {
+        std::vector<double> row;
+        std::istringstream  fields(line);
+        std::string         field;
+        while (std::getline(fields, field, ','))
+          row.push_back(std::stod(field));
+        catalogue.push_back(row);
+      }
+  }
+  // 0-based columns (2-D): number, start (s), start (years), end (s),
+  // duration (s), hypocentre x and y, peak slip rate, moment (N/m),
+  // ruptured length, mean slip, largest slip, complete.
+  bool as_the_slider = catalogue.size() == reference.start.size() &&
+                       slips.size() == catalogue.size();
+  std::printf("  catalogue: event  start (yr)  duration (s)  slip (m): ODE   "
+              "catalogue\n");
+  for (unsigned int i = 0; i < catalogue.size(); ++i)
+    {
+      const auto  &r    = catalogue[i];
+      const double slip = i < slips.size() ? slips[i] : 0;
+      std::printf("             %5.0f  %10.4f  %12.2f  %10.5f  %9.5f\n",
+                  r[0],
+                  r[2],
+                  r[4],
+                  slip,
+                  r[10]);
+      as_the_slider = as_the_slider && r.size() == 13 && r[12] == 1 &&
+                      std::abs(r[1] - reference.start[i]) < 1e-3 * exact[0] &&
+                      std::abs(r[7] / reference.peak[i] - 1) < 1e-3 &&
+                      std::abs(r[10] / slip - 1) < 1e-3 && r[9] == 100 &&
+                      r[6] == 500 && std::abs(r[11] / r[10] - 1) < 1e-9 &&
+                      std::abs(r[8] / (mu * 100 * r[10]) - 1) < 1e-9;
+    }
+  std::printf("  catalogue: start, peak slip rate and slip of each event as "
+              "the slider's within 0.1 %%, ruptured length 100 m, moment mu "
+              "L slip: %s\n",
+              as_the_slider ? "yes" : "no");
   return 0;
 }

@@ -58,6 +58,25 @@ namespace rupture
     };
 
     /**
+     * An earthquake's sums over the fault since Fault::start_event(), over
+     * all ranks (EventCatalogue).
+     */
+    template <int dim>
+    struct EventSummary
+    {
+      /// The largest frictional slip rate any pair reached (m/s).
+      double peak_rate = 0;
+      /// Sum of mu A |slip - slip at the event's start| (N m; N/m in 2-D).
+      double moment = 0;
+      /// The area (m^2; m in 2-D) of the pairs whose slip rate reached the
+      /// threshold, and the sum of area x slip over them.
+      double area      = 0;
+      double slip_area = 0;
+      /// The largest slip of a pair in the event (m).
+      double largest_slip = 0;
+    };
+
+    /**
      * A fault as a frictional contact interface that splits the
      * displacement field (see doc/design.md).
      *
@@ -440,6 +459,41 @@ namespace rupture
        */
       double
       state_evolution_time() const;
+
+      /**
+       * The largest frictional slip rate over all ranks (the rate that
+       * rupture times are measured on: plastic with penalty contact) and
+       * the location of a pair that has it. Collective.
+       */
+      std::pair<double, Point<dim>>
+      fastest_pair() const;
+
+      /**
+       * An earthquake starts: each pair keeps its slip and rate as the
+       * event's start (EventCatalogue).
+       */
+      void
+      start_event();
+
+      /**
+       * After each step of an event: each pair's peak slip rate.
+       */
+      void
+      track_event();
+
+      /**
+       * The event's sums since start_event(), pairs counted as ruptured
+       * where their peak slip rate reached @p threshold. Collective.
+       */
+      EventSummary<dim>
+      event_summary(const double threshold) const;
+
+      /// The fault's communicator.
+      MPI_Comm
+      mpi_communicator() const
+      {
+        return communicator;
+      }
 
       /**
        * The locations of the locally owned pairs that slip faster than

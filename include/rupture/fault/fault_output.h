@@ -1,6 +1,7 @@
 #ifndef rupture_fault_fault_output_h
 #define rupture_fault_fault_output_h
 
+#include <rupture/fault/event_catalogue.h>
 #include <rupture/fault/fault.h>
 #include <rupture/output/directory.h>
 #include <rupture/output/series.h>
@@ -23,7 +24,9 @@ namespace rupture
      *   shear traction, state (0 stick, 1 slip, 2 open) and rupture time;
      * - station time series <output>/<name>.dat at named fault points in the
      *   SCEC format (values interpolated from the fault nodes);
-     * - <output>/rupture_time.dat, the rupture-time contour file.
+     * - <output>/rupture_time.dat, the rupture-time contour file;
+     * - <output>/events.csv, the earthquake catalogue (EventCatalogue), if
+     *   asked for.
      *
      * Along-strike (h) and down-dip (v) components use the fault's strike
      * and dip directions; slip is the plus side's displacement minus the
@@ -91,10 +94,18 @@ namespace rupture
       keep_series_in(Output::Directory &directory);
 
       /**
-       * Record the station values of the current step.
+       * Record the station values of the current step, and start, follow
+       * or end an event of the catalogue. Collective.
        */
       void
-      record(const Fault<dim> &fault, const double time);
+      record(Fault<dim> &fault, const double time);
+
+      /// Whether the run keeps an event catalogue.
+      bool
+      has_event_catalogue() const
+      {
+        return events.enabled();
+      }
 
       /**
        * A loading phase starts: its fault surfaces are written as
@@ -121,7 +132,8 @@ namespace rupture
                     const unsigned int step);
 
       /**
-       * Write the station files and the rupture-time contours.
+       * Write the station files, the rupture-time contours and the event
+       * catalogue. Collective.
        */
       void
       write_tables(const Fault<dim>  &fault,
@@ -163,7 +175,8 @@ namespace rupture
       double                                            surface = 0;
       std::vector<std::vector<types::global_dof_index>> faces;
       std::vector<std::pair<double, std::string>>       records;
-      std::string file_prefix = "fault", pvd_name = "fault.pvd";
+      std::string         file_prefix = "fault", pvd_name = "fault.pvd";
+      EventCatalogue<dim> events;
     };
   } // namespace Fault
 } // namespace rupture

@@ -90,6 +90,11 @@ namespace rupture
       /// Slip at the start of the dynamic phase: output and statistics
       /// count the slip from there (coseismic slip).
       Tensor<1, dim> slip_at_start;
+      /// Slip at the start of the current earthquake and the peak
+      /// frictional slip rate since (the event catalogue's; not carried to
+      /// a new mesh).
+      Tensor<1, dim> event_slip;
+      double         event_peak_rate = 0;
 
       /**
        * Append the state to @p v in the order of the checkpoint (the law's
