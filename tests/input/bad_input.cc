@@ -310,6 +310,28 @@ main(int argc, char **argv)
         {"valid.prm",
          "--set",
          "Time integration/Step controller/State evolution fraction=2"});
+  check("an event catalogue with mesh refinement",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=rupture front",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 500",
+         "--set",
+         "Fault/Plane normal=0, 1",
+         "--set",
+         "Fault/Output/Event catalogue=true"});
+  check("an event slip rate of 0",
+        {"valid.prm",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 500",
+         "--set",
+         "Fault/Plane normal=0, 1",
+         "--set",
+         "Fault/Output/Event slip rate=0"});
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});
