@@ -119,6 +119,36 @@ namespace tests
   }
 
   /**
+   * The rows of numbers of a CSV file such as events.csv: lines that start
+   * with '#' and the line of column names (the first other line) left out.
+   */
+  inline std::vector<std::vector<double>>
+  read_csv(const std::string &file)
+  {
+    std::vector<std::vector<double>> rows;
+    std::ifstream                    in(file);
+    std::string                      line;
+    bool                             names = true;
+    while (std::getline(in, line))
+      {
+        if (line.empty() || line[0] == '#')
+          continue;
+        if (names)
+          {
+            names = false;
+            continue;
+          }
+        std::vector<double> row;
+        std::istringstream  fields(line);
+        std::string         field;
+        while (std::getline(fields, field, ','))
+          row.push_back(std::stod(field));
+        rows.push_back(row);
+      }
+    return rows;
+  }
+
+  /**
    * The rupture time of a fault station's table (as read_statistics()
    * gives it): the first time (column 0) at which the along-strike slip
    * rate (column 2) exceeds 1 mm/s; -1 if it never does.

@@ -60,6 +60,18 @@ namespace rupture
           "fault, n x e_z (in 2-D the fault's tangent with n x t > 0). The "
           "down-dip (v) direction is n x strike, turned to point down.");
         prm.declare_entry(
+          "Station format",
+          "SCEC",
+          Patterns::Selection("SCEC|SEAS"),
+          "The layout of the station files. 'SCEC': the dynamic-rupture "
+          "benchmarks' (time, horizontal and vertical slip, slip rate and "
+          "shear stress, then the normal stress and the law's state). "
+          "'SEAS': the SCEC SEAS (earthquake cycle) benchmarks' 't slip "
+          "slip_rate shear_stress state': the along-strike slip (m), the "
+          "log10 of the magnitude of its rate (m/s; -300 where it is 0), "
+          "the along-strike shear stress (MPa) and the log10 of the first "
+          "state variable (0 for laws without a state).");
+        prm.declare_entry(
           "Output interval",
           "",
           Patterns::Anything(),
@@ -88,6 +100,7 @@ namespace rupture
       strike_text   = prm.get("Along-strike direction");
       origin_text   = dealii::Utilities::trim(prm.get("Down-dip origin"));
       interval_text = dealii::Utilities::trim(prm.get("Output interval"));
+      seas_format   = (prm.get("Station format") == "SEAS");
       events.parse_parameters(prm);
       prm.leave_subsection();
       if (!interval_text.empty())
@@ -527,6 +540,11 @@ namespace rupture
         return;
       for (const auto &s : stations)
         {
+          if (seas_format)
+            {
+              directory.write(s.name + ".dat", seas_station(s, test_mode));
+              continue;
+            }
           std::ostringstream   out;
           const Tensor<1, dim> r = s.location - origin;
           out << "# problem = rupture station output\n"
@@ -604,6 +622,47 @@ namespace rupture
               << " " << (rec.rupture_time < 0 ? 1e9 : rec.rupture_time) << "\n";
         }
       directory.write("rupture_time.dat", out.str());
+    }
+
+
+
+    template <int dim>
+    std::string
+    FaultOutput<dim>::seas_station(const Station &s, const bool test_mode) const
+    {
+      std::ostringstream out;
+      out << "# This is the file header:\n"
+          << "# problem = rupture station output (SCEC SEAS format)\n"
+          << "# code = rupture\n";
+      if (!test_mode)
+        {
+          const std::time_t now = std::time(nullptr);
+          out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
+              << "\n";
+        }
+      const Tensor<1, dim> r = s.location - origin;
+      out << "# location = on fault, " << strike_component(r) / 1e3
+          << " km along strike, " << down_dip_distance(s.location) / 1e3
+          << " km down-dip\n"
+          << "# Column #1 = Time (s)\n"
+          << "# Column #2 = Slip (m)\n"
+          << "# Column #3 = Slip rate (log10 m/s)\n"
+          << "# Column #4 = Shear stress (MPa)\n"
+          << "# Column #5 = State (log10 s)\n"
+          << "# The line below lists the names of the data fields\n"
+          << "t slip slip_rate shear_stress state\n"
+          << "# Here is the time-series data.\n";
+      // A row of the station: t, h-slip, h-slip-rate, h-shear-stress,
+      // v-..., then with a state the normal stress and the state outputs
+      // (log10 theta first).
+      out << std::scientific << std::setprecision(7);
+      s.rows.for_each([&](const std::vector<double> &row) {
+        const double rate = std::abs(row[2]);
+        out << row[0] << " " << row[1] << " "
+            << (rate > 0 ? std::log10(rate) : -300.) << " " << row[3] << " "
+            << (row.size() > 8 ? row[8] : 0.) << "\n";
+      });
+      return out.str();
     }
 
 

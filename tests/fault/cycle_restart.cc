@@ -96,25 +96,8 @@ main(int argc, char **argv)
 
   // The event catalogue: the event open at the checkpoint ends in the
   // continued run with the uninterrupted run's row.
-  const auto rows_of = [](const std::string &file) {
-    std::vector<std::vector<double>> rows;
-    std::istringstream               in(tests::read_file(file));
-    std::string                      line;
-    std::getline(in, line);
-    std::getline(in, line);
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        std::istringstream  fields(line);
-        std::string         field;
-        while (std::getline(fields, field, ','))
-          row.push_back(std::stod(field));
-        rows.push_back(row);
-      }
-    return rows;
-  };
-  const auto full_events    = rows_of("full/events.csv");
-  const auto stopped_events = rows_of("stopped/events.csv");
+  const auto full_events    = tests::read_csv("full/events.csv");
+  const auto stopped_events = tests::read_csv("stopped/events.csv");
   bool       same_events    = full_events.size() == 1 &&
                      stopped_events.size() == full_events.size() &&
                      full_events[0].size() == stopped_events[0].size();

@@ -273,22 +273,7 @@ main(int argc, char **argv)
       else if (V[i - 1] >= 1e-3 && V[i] < 1e-3)
         slips.push_back(at(i, 1e-3) - start);
   }
-  std::vector<std::vector<double>> catalogue;
-  {
-    std::istringstream in(tests::read_file("centred/events.csv"));
-    std::string        line;
-    std::getline(in, line); // the comment
-    std::getline(in, line); // the names
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        std::istringstream  fields(line);
-        std::string         field;
-        while (std::getline(fields, field, ','))
-          row.push_back(std::stod(field));
-        catalogue.push_back(row);
-      }
-  }
+  const auto catalogue = tests::read_csv("centred/events.csv");
   // 0-based columns (2-D): number, start (s), start (years), end (s),
   // duration (s), hypocentre x and y, peak slip rate, moment (N/m),
   // ruptured length, mean slip, largest slip, complete.

@@ -161,11 +161,16 @@ namespace rupture
       /// its distance down-dip from the plane point.
       double
       down_dip_distance(const Point<dim> &x) const;
+      /// The text of station @p s in the SCEC SEAS layout.
+      std::string
+      seas_station(const Station &s, const bool test_mode) const;
 
-      MPI_Comm                                          communicator;
-      std::string                                       station_text;
-      std::string                                       strike_text;
-      std::string                                       interval_text;
+      MPI_Comm    communicator;
+      std::string station_text;
+      std::string strike_text;
+      std::string interval_text;
+      /// <Station format> = SEAS.
+      bool                                              seas_format = false;
       std::string                                       origin_text;
       std::vector<Station>                              stations;
       std::set<types::global_dof_index>                 station_keys;
