@@ -14,34 +14,9 @@
 
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <string>
 #include <vector>
 
-namespace
-{
-  // The rows of numbers of a station file (lines that are not comments
-  // and do not start with 't ').
-  std::vector<std::vector<double>>
-  rows_of(const std::string &file)
-  {
-    std::vector<std::vector<double>> rows;
-    std::istringstream               in(tests::read_file(file));
-    std::string                      line;
-    while (std::getline(in, line))
-      {
-        if (line.empty() || line[0] == '#' || line.rfind("t ", 0) == 0)
-          continue;
-        std::istringstream  fields(line);
-        std::vector<double> row;
-        double              x;
-        while (fields >> x)
-          row.push_back(x);
-        rows.push_back(row);
-      }
-    return rows;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -60,8 +35,9 @@ main(int argc, char **argv)
                   std::string::npos ?
                 "t slip slip_rate shear_stress state" :
                 "missing");
-  const auto scec = rows_of("scec/mid.dat"), seas = rows_of("seas/mid.dat");
-  bool       same = !seas.empty() && seas.size() == scec.size();
+  const auto scec = tests::read_statistics("scec/mid.dat"),
+             seas = tests::read_statistics("seas/mid.dat");
+  bool same       = !seas.empty() && seas.size() == scec.size();
   for (unsigned int i = 0; same && i < seas.size(); ++i)
     same = seas[i].size() == 5 && seas[i][0] == scec[i][0] &&
            std::abs(seas[i][1] - scec[i][1]) <= 1e-7 * std::abs(scec[i][1]) &&

@@ -310,28 +310,24 @@ main(int argc, char **argv)
         {"valid.prm",
          "--set",
          "Time integration/Step controller/State evolution fraction=2"});
-  check("an event catalogue with mesh refinement",
-        {"valid.prm",
-         "--set",
-         "Mesh refinement/Criteria=rupture front",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 500",
-         "--set",
-         "Fault/Plane normal=0, 1",
-         "--set",
-         "Fault/Output/Event catalogue=true"});
+  // The valid run with a penalty fault and one more setting.
+  const auto with_fault = [](const std::string &setting) {
+    return std::vector<std::string>{"valid.prm",
+                                    "--set",
+                                    "Fault/Model=penalty contact",
+                                    "--set",
+                                    "Fault/Plane point=0, 500",
+                                    "--set",
+                                    "Fault/Plane normal=0, 1",
+                                    "--set",
+                                    setting};
+  };
+  auto refined = with_fault("Fault/Output/Event catalogue=true");
+  refined.insert(refined.end(),
+                 {"--set", "Mesh refinement/Criteria=rupture front"});
+  check("an event catalogue with mesh refinement", refined);
   check("an event slip rate of 0",
-        {"valid.prm",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 500",
-         "--set",
-         "Fault/Plane normal=0, 1",
-         "--set",
-         "Fault/Output/Event slip rate=0"});
+        with_fault("Fault/Output/Event slip rate=0"));
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});
