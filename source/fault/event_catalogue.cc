@@ -56,7 +56,7 @@ namespace rupture
 
     template <int dim>
     bool
-    EventCatalogue<dim>::record(Fault<dim> &fault, const double time)
+    EventCatalogue<dim>::record(EventSource<dim> &fault, const double time)
     {
       if (!is_enabled)
         return false;
@@ -108,8 +108,8 @@ namespace rupture
 
     template <int dim>
     void
-    EventCatalogue<dim>::write(const Fault<dim>  &fault,
-                               Output::Directory &directory) const
+    EventCatalogue<dim>::write(const EventSource<dim> &fault,
+                               Output::Directory      &directory) const
     {
       if (!is_enabled)
         return;

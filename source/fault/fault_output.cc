@@ -2,6 +2,7 @@
 #include <rupture/base/utilities.h>
 #include <rupture/fault/face_nodes.h>
 #include <rupture/fault/fault_output.h>
+#include <rupture/output/seas_format.h>
 #include <rupture/output/series_header.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -630,39 +631,20 @@ namespace rupture
     std::string
     FaultOutput<dim>::seas_station(const Station &s, const bool test_mode) const
     {
-      std::ostringstream out;
-      out << "# This is the file header:\n"
-          << "# problem = rupture station output (SCEC SEAS format)\n"
-          << "# code = rupture\n";
-      if (!test_mode)
-        {
-          const std::time_t now = std::time(nullptr);
-          out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
-              << "\n";
-        }
       const Tensor<1, dim> r = s.location - origin;
-      out << "# location = on fault, " << strike_component(r) / 1e3
-          << " km along strike, " << down_dip_distance(s.location) / 1e3
-          << " km down-dip\n"
-          << "# Column #1 = Time (s)\n"
-          << "# Column #2 = Slip (m)\n"
-          << "# Column #3 = Slip rate (log10 m/s)\n"
-          << "# Column #4 = Shear stress (MPa)\n"
-          << "# Column #5 = State (log10 s)\n"
-          << "# The line below lists the names of the data fields\n"
-          << "t slip slip_rate shear_stress state\n"
-          << "# Here is the time-series data.\n";
+      std::ostringstream   location;
+      location << "on fault, " << strike_component(r) / 1e3
+               << " km along strike, " << down_dip_distance(s.location) / 1e3
+               << " km down-dip";
+      std::string out = Output::seas_station_header(location.str(), test_mode);
       // A row of the station: t, h-slip, h-slip-rate, h-shear-stress,
       // v-..., then with a state the normal stress and the state outputs
       // (log10 theta first).
-      out << std::scientific << std::setprecision(7);
       s.rows.for_each([&](const std::vector<double> &row) {
-        const double rate = std::abs(row[2]);
-        out << row[0] << " " << row[1] << " "
-            << (rate > 0 ? std::log10(rate) : -300.) << " " << row[3] << " "
-            << (row.size() > 8 ? row[8] : 0.) << "\n";
+        out += Output::seas_station_row(
+          row[0], row[1], row[2], row[3], row.size() > 8 ? row[8] : 0.);
       });
-      return out.str();
+      return out;
     }
 
 

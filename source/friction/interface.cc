@@ -50,6 +50,19 @@ namespace rupture
 
 
 
+    void
+    Interface::state_rate(const Point<3> &,
+                          const State &,
+                          const double,
+                          std::vector<double> &) const
+    {
+      AssertThrow(false,
+                  ExcMessage("This friction law gives no rate of change of "
+                             "its state (has_state_rate() is false)."));
+    }
+
+
+
     double
     Interface::process_zone_width(const Point<3> &,
                                   const State &,

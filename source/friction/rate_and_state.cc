@@ -324,6 +324,25 @@ namespace rupture
 
 
 
+    void
+    RateAndState::state_rate(const Point<3>      &x,
+                             const State         &state,
+                             const double         V,
+                             std::vector<double> &rates) const
+    {
+      const double L     = LawUtilities::constants(functions, x, state)[2];
+      const double theta = state.variables.at(0);
+      const double omega = V * theta / L;
+      // aging: 1 - V theta / L; slip: -(V theta / L) ln(V theta / L), which
+      // tends to 0 as V -> 0.
+      rates.assign(1,
+                   evolution == EvolutionLaw::aging ?
+                     1 - omega :
+                     (omega > 0 ? -omega * std::log(omega) : 0.));
+    }
+
+
+
     double
     RateAndState::process_zone_width(const Point<3> &x,
                                      const State    &state,

@@ -1,5 +1,6 @@
 #include <rupture/base/interruption.h>
 #include <rupture/base/utilities.h>
+#include <rupture/boundary_integral/simulation.h>
 #include <rupture/simulator/run.h>
 #include <rupture/simulator/simulator.h>
 
@@ -346,6 +347,7 @@ namespace rupture
 
         ParameterHandler prm;
         Simulator<2>::declare_parameters(prm);
+        BoundaryIntegral::declare_parameters(prm);
 
         if (!print_format.empty())
           {
@@ -492,7 +494,16 @@ namespace rupture
         // From here on SIGTERM and SIGINT stop the run cleanly.
         const Interruption::Handlers handlers;
         const unsigned int           dimension = prm.get_integer("Dimension");
-        if (dimension == 2)
+        if (BoundaryIntegral::chosen(prm))
+          {
+            AssertThrow(!resume,
+                        ExcMessage("--resume: the boundary-integral method "
+                                   "(<Method> = boundary integral) writes no "
+                                   "checkpoints yet, so it cannot continue a "
+                                   "run."));
+            BoundaryIntegral::run(prm, communicator);
+          }
+        else if (dimension == 2)
           run_simulation<2>(prm, communicator, resume, refinements);
         else
           run_simulation<3>(prm, communicator, resume, refinements);

@@ -328,6 +328,30 @@ main(int argc, char **argv)
   check("an event catalogue with mesh refinement", refined);
   check("an event slip rate of 0",
         with_fault("Fault/Output/Event slip rate=0"));
+  // The boundary-integral method's one-element slider with one more
+  // setting.
+  const auto boundary_integral = [](const std::string &setting) {
+    return std::vector<std::string>{
+      std::string(SOURCE_DIR) +
+        "/../boundary_integral/inputs/spring_slider.prm",
+      "--set",
+      "Output directory=earlier-run",
+      "--set",
+      setting};
+  };
+  check("the boundary-integral method with a law without a state rate",
+        boundary_integral("Fault/Friction law=linear slip weakening"));
+  check("the boundary-integral method with elements of 0 m",
+        boundary_integral("Boundary integral/Element size=0"));
+  check("the boundary-integral method with a station off the fault",
+        boundary_integral("Fault/Output/Stations=off: 100, -200"));
+  check("the boundary-integral method without an initial shear stress",
+        boundary_integral("Boundary integral/Initial shear stress="));
+  check("the boundary-integral method with a tensile normal stress",
+        boundary_integral("Boundary integral/Normal stress=-1e6"));
+  auto resumed = boundary_integral("Boundary integral/Element size=400");
+  resumed.push_back("--resume");
+  check("the boundary-integral method continued with --resume", resumed);
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

@@ -1,7 +1,7 @@
 #ifndef rupture_fault_event_catalogue_h
 #define rupture_fault_event_catalogue_h
 
-#include <rupture/fault/fault.h>
+#include <rupture/fault/event_source.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -30,10 +30,10 @@ namespace rupture
      * in 2-D: the pairs whose slip rate reached the threshold), and the
      * mean (over that area) and largest slip of the event.
      *
-     * The per-pair part (each pair's slip at the event's start and its
-     * peak slip rate) belongs to the fault (Fault::start_event(),
-     * track_event(), event_summary()); this object keeps the rows and the
-     * open event, and a checkpoint keeps both (the rows are few).
+     * The per-point part (each point's slip at the event's start and its
+     * peak slip rate) belongs to the fault (EventSource: the finite-element
+     * Fault or the boundary-integral fault); this object keeps the rows and
+     * the open event, and a checkpoint keeps both (the rows are few).
      */
     template <int dim>
     class EventCatalogue
@@ -58,13 +58,13 @@ namespace rupture
        * due). Collective.
        */
       bool
-      record(Fault<dim> &fault, const double time);
+      record(EventSource<dim> &fault, const double time);
 
       /**
        * Write events.csv (rank 0), with the open event as incomplete.
        */
       void
-      write(const Fault<dim> &fault, Output::Directory &directory) const;
+      write(const EventSource<dim> &fault, Output::Directory &directory) const;
 
       void
       save(std::ostream &out) const;

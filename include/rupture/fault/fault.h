@@ -3,6 +3,7 @@
 
 #include <rupture/base/sparse_gather.h>
 #include <rupture/fault/contact.h>
+#include <rupture/fault/event_source.h>
 #include <rupture/fault/node_state.h>
 #include <rupture/friction/interface.h>
 #include <rupture/operators/pair_blocks.h>
@@ -58,25 +59,6 @@ namespace rupture
     };
 
     /**
-     * An earthquake's sums over the fault since Fault::start_event(), over
-     * all ranks (EventCatalogue).
-     */
-    template <int dim>
-    struct EventSummary
-    {
-      /// The largest frictional slip rate any pair reached (m/s).
-      double peak_rate = 0;
-      /// Sum of mu A |slip - slip at the event's start| (N m; N/m in 2-D).
-      double moment = 0;
-      /// The area (m^2; m in 2-D) of the pairs whose slip rate reached the
-      /// threshold, and the sum of area x slip over them.
-      double area      = 0;
-      double slip_area = 0;
-      /// The largest slip of a pair in the event (m).
-      double largest_slip = 0;
-    };
-
-    /**
      * A fault as a frictional contact interface that splits the
      * displacement field (see doc/design.md).
      *
@@ -92,7 +74,7 @@ namespace rupture
      * a vertex quadrature of the fault faces.
      */
     template <int dim>
-    class Fault
+    class Fault : public EventSource<dim>
     {
     public:
       using VectorType = TrilinosWrappers::MPI::Vector;
@@ -466,31 +448,31 @@ namespace rupture
        * the location of a pair that has it. Collective.
        */
       std::pair<double, Point<dim>>
-      fastest_pair() const;
+      fastest_pair() const override;
 
       /**
        * An earthquake starts: each pair keeps its slip and rate as the
        * event's start (EventCatalogue).
        */
       void
-      start_event();
+      start_event() override;
 
       /**
        * After each step of an event: each pair's peak slip rate.
        */
       void
-      track_event();
+      track_event() override;
 
       /**
        * The event's sums since start_event(), pairs counted as ruptured
        * where their peak slip rate reached @p threshold. Collective.
        */
       EventSummary<dim>
-      event_summary(const double threshold) const;
+      event_summary(const double threshold) const override;
 
       /// The fault's communicator.
       MPI_Comm
-      mpi_communicator() const
+      mpi_communicator() const override
       {
         return communicator;
       }

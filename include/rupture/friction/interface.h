@@ -274,6 +274,29 @@ namespace rupture
       slip_scale(const Point<3> &x, const State &state) const;
 
       /**
+       * Whether the law gives the rates of change of its state variables
+       * (state_rate()): what a method that integrates the fault's state as
+       * an ordinary differential equation needs (the boundary-integral
+       * method).
+       */
+      virtual bool
+      has_state_rate() const
+      {
+        return false;
+      }
+
+      /**
+       * The rates of change d(state variable)/dt of the state variables of
+       * @p state at the slip rate @p V (>= 0, m/s), one per variable, in
+       * @p rates. Laws without has_state_rate() throw.
+       */
+      virtual void
+      state_rate(const Point<3>      &x,
+                 const State         &state,
+                 const double         V,
+                 std::vector<double> &rates) const;
+
+      /**
        * Whether process_zone_width() gives an estimate: a mesh that
        * refines to the process zone needs it.
        */

@@ -106,6 +106,18 @@ namespace rupture
       slip_scale(const Point<3> &x, const State &state) const override;
 
       bool
+      has_state_rate() const override
+      {
+        return true;
+      }
+
+      void
+      state_rate(const Point<3>      &x,
+                 const State         &state,
+                 const double         V,
+                 std::vector<double> &rates) const override;
+
+      bool
       has_process_zone_width() const override
       {
         return true;

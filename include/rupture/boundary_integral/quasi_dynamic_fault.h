@@ -1,0 +1,175 @@
+#ifndef rupture_boundary_integral_quasi_dynamic_fault_h
+#define rupture_boundary_integral_quasi_dynamic_fault_h
+
+#include <rupture/boundary_integral/antiplane_half_space.h>
+#include <rupture/fault/event_source.h>
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <vector>
+
+namespace rupture
+{
+  namespace BoundaryIntegral
+  {
+    /**
+     * The fault of the boundary-integral method as a system of ordinary
+     * differential equations: the slip s_i and the friction law's state of
+     * every element evolve with
+     *   ds_i/dt = V_i,   d(state_i)/dt = the law's state rate at V_i,
+     * where the slip rate V_i >= 0 solves, point by point, the balance of
+     * the elastic traction and the strength with radiation damping eta
+     * (the quasi-dynamic approximation of inertia),
+     *   tau_i - eta V_i = S_i(V_i, state_i),
+     *   tau_i = tau0_i + sum_j K_ij (s_j - V_p t)
+     * (AntiplaneHalfSpace), S the law's strength at the rate with the
+     * state held (Friction::Interface::strength_at_rate). The law sees the
+     * element's centre as the point (0, -depth, 0): its functions of
+     * position are written in the depth -y.
+     *
+     * The unknowns are one vector y: the N slips, then the N values of
+     * each state variable (in its logarithm where the law says the
+     * variable spans decades, Friction::Interface::
+     * state_interpolates_in_logarithm()). Each rank computes the rows of K
+     * it owns and the ranks exchange their rates, so every rank holds all
+     * of y and takes the same steps.
+     *
+     * It is also the event catalogue's source (the slip at an event's
+     * start, the peak slip rates, the moment per unit length).
+     */
+    class QuasiDynamicFault : public Fault::EventSource<2>
+    {
+    public:
+      /**
+       * The fault of @p geometry with the friction law @p law at the
+       * normal stress @p normal_stress (Pa, compressive > 0), the initial
+       * shear traction @p initial_shear (Pa) and the initial slip rate
+       * @p initial_rate (m/s) per element; radiation damping
+       * @p damping (Pa s/m) and the plate rate @p plate_rate (m/s).
+       */
+      QuasiDynamicFault(const AntiplaneHalfSpace  &geometry,
+                        const Friction::Interface &law,
+                        const std::vector<double> &normal_stress,
+                        const std::vector<double> &initial_shear,
+                        const std::vector<double> &initial_rate,
+                        const double               damping,
+                        const double               plate_rate,
+                        const MPI_Comm             communicator);
+
+      /// The initial unknowns (zero slip, the law's initial state).
+      std::vector<double>
+      initial_values() const;
+
+      /// The tolerances below which a change of each unknown does not
+      /// matter: @p slip (m) for the slips, @p state (of the variable, or
+      /// of its logarithm) for the states.
+      std::vector<double>
+      absolute_tolerances(const double slip, const double state) const;
+
+      /// dy/dt at time @p t (s since the start) and @p y. Collective.
+      void
+      rates(const double               t,
+            const std::vector<double> &y,
+            std::vector<double>       &rate);
+
+      /**
+       * Evaluate slip rate, traction and state at (@p t, @p y) for
+       * output and events (what slip_rate(), shear_stress() and state()
+       * then give). Collective.
+       */
+      void
+      evaluate(const double t, const std::vector<double> &y);
+
+      unsigned int
+      size() const
+      {
+        return n;
+      }
+      double
+      depth(const unsigned int i) const
+      {
+        return geometry.centre(i);
+      }
+      double
+      slip(const unsigned int i) const
+      {
+        return current[i];
+      }
+      double
+      slip_rate(const unsigned int i) const
+      {
+        return velocity[i];
+      }
+      /// The shear traction tau_i - eta V_i (Pa) carried by the fault.
+      double
+      shear_stress(const unsigned int i) const
+      {
+        return traction[i];
+      }
+      /// The law's first state variable (as the law defines it).
+      double
+      state(const unsigned int i) const;
+      /// The law's state outputs of element @p i (e.g. log10 theta).
+      std::vector<double>
+      state_output(const unsigned int i) const;
+      double
+      max_slip_rate() const;
+      /// min over the elements of the law's slip scale over V (s).
+      double
+      state_evolution_time() const;
+
+      // The event catalogue's questions (Fault::EventSource).
+      std::pair<double, Point<2>>
+      fastest_pair() const override;
+      void
+      start_event() override;
+      void
+      track_event() override;
+      Fault::EventSummary<2>
+      event_summary(const double threshold) const override;
+      MPI_Comm
+      mpi_communicator() const override
+      {
+        return communicator;
+      }
+
+    private:
+      /// The slip rate at element @p i for the elastic traction
+      /// @p tau with the state @p state.
+      double
+      solve_rate(const unsigned int     i,
+                 const double           tau,
+                 const Friction::State &state) const;
+      /// Fill the state of element @p i from y.
+      void
+      unpack_state(const unsigned int         i,
+                   const std::vector<double> &y,
+                   Friction::State           &state) const;
+
+      const AntiplaneHalfSpace  &geometry;
+      const Friction::Interface &law;
+      const MPI_Comm             communicator;
+      const unsigned int         n;
+      unsigned int               n_variables = 0;
+      std::vector<bool>          logarithmic;
+      std::vector<Point<3>>      points;
+      std::vector<double>        sigma, tau0;
+      const double               eta, plate_rate;
+      /// The law's state of every element at the start (its parameters).
+      std::vector<Friction::State> states;
+      /// This rank's rows of K, and their range.
+      unsigned int        row_begin = 0, row_end = 0;
+      std::vector<double> stiffness;
+      /// Rows per rank, for the exchange of the rates.
+      std::vector<int> counts, offsets;
+      // The last evaluate().
+      std::vector<double>              current, velocity, traction;
+      std::vector<std::vector<double>> variables;
+      // The open event.
+      std::vector<double> event_start, event_peak;
+    };
+  } // namespace BoundaryIntegral
+} // namespace rupture
+
+#endif

@@ -1,0 +1,357 @@
+// The boundary-integral fault as a system of ordinary differential
+// equations: elastic traction from the slip, the slip rate from friction
+// with radiation damping point by point, the state's rates from the law.
+
+#include <rupture/boundary_integral/quasi_dynamic_fault.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace rupture
+{
+  namespace BoundaryIntegral
+  {
+    QuasiDynamicFault::QuasiDynamicFault(
+      const AntiplaneHalfSpace  &geometry,
+      const Friction::Interface &law,
+      const std::vector<double> &normal_stress,
+      const std::vector<double> &initial_shear,
+      const std::vector<double> &initial_rate,
+      const double               damping,
+      const double               plate_rate,
+      const MPI_Comm             communicator)
+      : geometry(geometry)
+      , law(law)
+      , communicator(communicator)
+      , n(geometry.size())
+      , sigma(normal_stress)
+      , tau0(initial_shear)
+      , eta(damping)
+      , plate_rate(plate_rate)
+      , states(n)
+      , current(n, 0.)
+      , velocity(initial_rate)
+      , traction(initial_shear)
+      , event_start(n, 0.)
+      , event_peak(n, 0.)
+    {
+      AssertThrow(sigma.size() == n && tau0.size() == n &&
+                    initial_rate.size() == n,
+                  ExcInternalError());
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          points.emplace_back(0., -geometry.centre(i), 0.);
+          // The law holds at the start: S(V_ini, state) = tau0 - eta V_ini.
+          const double friction =
+            sigma[i] > 0 ?
+              (std::abs(tau0[i]) - eta * initial_rate[i]) / sigma[i] :
+              std::numeric_limits<double>::quiet_NaN();
+          law.initialize_state(points[i], friction, states[i]);
+        }
+      n_variables = states.empty() ? 0 : states[0].variables.size();
+      for (unsigned int v = 0; v < n_variables; ++v)
+        logarithmic.push_back(law.state_interpolates_in_logarithm(v));
+      variables.assign(n_variables, std::vector<double>(n));
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int v = 0; v < n_variables; ++v)
+          variables[v][i] = states[i].variables[v];
+
+      // Rows by rank.
+      const unsigned int ranks =
+        dealii::Utilities::MPI::n_mpi_processes(communicator);
+      const unsigned int rank =
+        dealii::Utilities::MPI::this_mpi_process(communicator);
+      counts.resize(ranks);
+      offsets.resize(ranks);
+      for (unsigned int r = 0; r < ranks; ++r)
+        {
+          const unsigned int begin = std::size_t(n) * r / ranks;
+          const unsigned int end   = std::size_t(n) * (r + 1) / ranks;
+          counts[r]                = end - begin;
+          offsets[r]               = begin;
+          if (r == rank)
+            {
+              row_begin = begin;
+              row_end   = end;
+            }
+        }
+      stiffness = geometry.rows(row_begin, row_end);
+    }
+
+
+
+    std::vector<double>
+    QuasiDynamicFault::initial_values() const
+    {
+      std::vector<double> y(n * (1 + n_variables), 0.);
+      for (unsigned int v = 0; v < n_variables; ++v)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double value = states[i].variables[v];
+            y[(1 + v) * std::size_t(n) + i] =
+              logarithmic[v] ? std::log(value) : value;
+          }
+      return y;
+    }
+
+
+
+    std::vector<double>
+    QuasiDynamicFault::absolute_tolerances(const double slip,
+                                           const double state) const
+    {
+      std::vector<double> tolerance(n * (1 + n_variables), state);
+      std::fill(tolerance.begin(), tolerance.begin() + n, slip);
+      return tolerance;
+    }
+
+
+
+    void
+    QuasiDynamicFault::unpack_state(const unsigned int         i,
+                                    const std::vector<double> &y,
+                                    Friction::State           &state) const
+    {
+      state = states[i];
+      for (unsigned int v = 0; v < n_variables; ++v)
+        {
+          const double value = y[(1 + v) * std::size_t(n) + i];
+          state.variables[v] = logarithmic[v] ? std::exp(value) : value;
+        }
+    }
+
+
+
+    double
+    QuasiDynamicFault::solve_rate(const unsigned int     i,
+                                  const double           tau,
+                                  const Friction::State &state) const
+    {
+      // g(V) = |tau| - eta V - S(V) falls with V: one root in [0, hi].
+      const double target = std::abs(tau);
+      double       dS = 0, dp = 0;
+      const auto   g = [&](const double V, double &dg) {
+        const double S =
+          law.strength_at_rate(points[i], state, V, sigma[i], dS, dp);
+        dg = -eta - dS;
+        return target - eta * V - S;
+      };
+      double dg = 0;
+      if (target == 0 || g(0., dg) <= 0)
+        return 0;
+      double lo = 0, hi = 0;
+      if (eta > 0)
+        hi = target / eta;
+      else
+        {
+          hi = 1e-9;
+          for (unsigned int k = 0; k < 400 && g(hi, dg) > 0; ++k)
+            hi *= 2;
+        }
+      // Newton in ln V, kept inside the bracket, bisecting (in ln V once
+      // the bracket's low end is positive) where a step would leave it.
+      double V = velocity[i];
+      if (!(V > lo && V < hi))
+        V = std::sqrt(hi * std::max(lo, 1e-30 * hi));
+      for (unsigned int iteration = 0; iteration < 200; ++iteration)
+        {
+          const double r = g(V, dg);
+          if (r > 0)
+            lo = V;
+          else
+            hi = V;
+          if (r == 0)
+            return V;
+          // d g / d ln V = V dg.
+          double next = V * std::exp(-r / (V * dg));
+          if (!(next > lo && next < hi) || !std::isfinite(next))
+            next = lo > 0 ? std::sqrt(lo * hi) : 1e-3 * hi;
+          if (std::abs(next - V) <= 1e-14 * V ||
+              (lo > 0 && hi - lo <= 1e-14 * hi))
+            return next;
+          V = next;
+        }
+      return V;
+    }
+
+
+
+    void
+    QuasiDynamicFault::rates(const double               t,
+                             const std::vector<double> &y,
+                             std::vector<double>       &rate)
+    {
+      rate.resize(y.size());
+      std::vector<double> relative(n);
+      for (unsigned int j = 0; j < n; ++j)
+        relative[j] = y[j] - plate_rate * t;
+      const unsigned int  owned = row_end - row_begin;
+      std::vector<double> local((1 + n_variables) * std::size_t(owned) + owned);
+      Friction::State     state;
+      std::vector<double> state_rates;
+      for (unsigned int r = 0; r < owned; ++r)
+        {
+          const unsigned int i   = row_begin + r;
+          const double      *row = &stiffness[std::size_t(r) * n];
+          double             tau = tau0[i];
+          for (unsigned int j = 0; j < n; ++j)
+            tau += row[j] * relative[j];
+          unpack_state(i, y, state);
+          const double V = solve_rate(i, tau, state);
+          velocity[i]    = V; // the next solve's first guess
+          local[r]       = tau < 0 ? -V : V;
+          law.state_rate(points[i], state, V, state_rates);
+          for (unsigned int v = 0; v < n_variables; ++v)
+            local[(1 + v) * std::size_t(owned) + r] =
+              logarithmic[v] ? state_rates[v] / state.variables[v] :
+                               state_rates[v];
+          local[(1 + n_variables) * std::size_t(owned) + r] =
+            tau - eta * local[r];
+        }
+      // Every rank gets every rate (block by block).
+      for (unsigned int b = 0; b < 1 + n_variables; ++b)
+        {
+          const int ierr = MPI_Allgatherv(local.data() + b * std::size_t(owned),
+                                          owned,
+                                          MPI_DOUBLE,
+                                          rate.data() + b * std::size_t(n),
+                                          counts.data(),
+                                          offsets.data(),
+                                          MPI_DOUBLE,
+                                          communicator);
+          AssertThrowMPI(ierr);
+        }
+      // (The traction of the owned rows, for evaluate().)
+      std::copy(local.begin() + (1 + n_variables) * std::size_t(owned),
+                local.end(),
+                traction.begin() + row_begin);
+    }
+
+
+
+    void
+    QuasiDynamicFault::evaluate(const double t, const std::vector<double> &y)
+    {
+      std::vector<double> rate;
+      rates(t, y, rate);
+      std::vector<double> owned(traction.begin() + row_begin,
+                                traction.begin() + row_end);
+      const int           ierr = MPI_Allgatherv(owned.data(),
+                                      owned.size(),
+                                      MPI_DOUBLE,
+                                      traction.data(),
+                                      counts.data(),
+                                      offsets.data(),
+                                      MPI_DOUBLE,
+                                      communicator);
+      AssertThrowMPI(ierr);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          current[i]  = y[i];
+          velocity[i] = std::abs(rate[i]);
+          for (unsigned int v = 0; v < n_variables; ++v)
+            {
+              const double value = y[(1 + v) * std::size_t(n) + i];
+              variables[v][i]    = logarithmic[v] ? std::exp(value) : value;
+            }
+        }
+    }
+
+
+
+    double
+    QuasiDynamicFault::state(const unsigned int i) const
+    {
+      return n_variables > 0 ? variables[0][i] :
+                               std::numeric_limits<double>::quiet_NaN();
+    }
+
+
+
+    std::vector<double>
+    QuasiDynamicFault::state_output(const unsigned int i) const
+    {
+      Friction::State s = states[i];
+      for (unsigned int v = 0; v < n_variables; ++v)
+        s.variables[v] = variables[v][i];
+      return law.state_output(s);
+    }
+
+
+
+    double
+    QuasiDynamicFault::max_slip_rate() const
+    {
+      return n > 0 ? *std::max_element(velocity.begin(), velocity.end()) : 0.;
+    }
+
+
+
+    double
+    QuasiDynamicFault::state_evolution_time() const
+    {
+      double shortest = std::numeric_limits<double>::infinity();
+      for (unsigned int i = 0; i < n; ++i)
+        if (velocity[i] > 0)
+          shortest =
+            std::min(shortest,
+                     law.slip_scale(points[i], states[i]) / velocity[i]);
+      return shortest;
+    }
+
+
+
+    std::pair<double, Point<2>>
+    QuasiDynamicFault::fastest_pair() const
+    {
+      const auto fastest   = std::max_element(velocity.begin(), velocity.end());
+      const unsigned int i = fastest - velocity.begin();
+      return {*fastest, Point<2>(0., -geometry.centre(i))};
+    }
+
+
+
+    void
+    QuasiDynamicFault::start_event()
+    {
+      event_start = current;
+      event_peak  = velocity;
+    }
+
+
+
+    void
+    QuasiDynamicFault::track_event()
+    {
+      for (unsigned int i = 0; i < n; ++i)
+        event_peak[i] = std::max(event_peak[i], velocity[i]);
+    }
+
+
+
+    Fault::EventSummary<2>
+    QuasiDynamicFault::event_summary(const double threshold) const
+    {
+      Fault::EventSummary<2> s;
+      const double           h = geometry.element_length();
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double slip = std::abs(current[i] - event_start[i]);
+          s.peak_rate       = std::max(s.peak_rate, event_peak[i]);
+          s.moment += geometry.shear_modulus() * h * slip;
+          if (event_peak[i] >= threshold)
+            {
+              s.area += h;
+              s.slip_area += h * slip;
+            }
+          s.largest_slip = std::max(s.largest_slip, slip);
+        }
+      return s;
+    }
+  } // namespace BoundaryIntegral
+} // namespace rupture

@@ -1,0 +1,57 @@
+// Station files in the layout of the SCEC SEAS benchmarks.
+
+#include <rupture/output/seas_format.h>
+
+#include <cmath>
+#include <ctime>
+#include <iomanip>
+#include <sstream>
+
+namespace rupture
+{
+  namespace Output
+  {
+    std::string
+    seas_station_header(const std::string &location, const bool test_mode)
+    {
+      std::ostringstream out;
+      out << "# This is the file header:\n"
+          << "# problem = rupture station output (SCEC SEAS format)\n"
+          << "# code = rupture\n";
+      if (!test_mode)
+        {
+          const std::time_t now = std::time(nullptr);
+          out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
+              << "\n";
+        }
+      out << "# location = " << location << "\n"
+          << "# Column #1 = Time (s)\n"
+          << "# Column #2 = Slip (m)\n"
+          << "# Column #3 = Slip rate (log10 m/s)\n"
+          << "# Column #4 = Shear stress (MPa)\n"
+          << "# Column #5 = State (log10 s)\n"
+          << "# The line below lists the names of the data fields\n"
+          << "t slip slip_rate shear_stress state\n"
+          << "# Here is the time-series data.\n";
+      return out.str();
+    }
+
+
+
+    std::string
+    seas_station_row(const double time,
+                     const double slip,
+                     const double rate,
+                     const double shear_stress,
+                     const double log10_state)
+    {
+      std::ostringstream out;
+      out << std::scientific << std::setprecision(7);
+      const double magnitude = std::abs(rate);
+      out << time << " " << slip << " "
+          << (magnitude > 0 ? std::log10(magnitude) : -300.) << " "
+          << shear_stress << " " << log10_state << "\n";
+      return out.str();
+    }
+  } // namespace Output
+} // namespace rupture
