@@ -2,6 +2,7 @@
 // equations: elastic traction from the slip, the slip rate from friction
 // with radiation damping point by point, the state's rates from the law.
 
+#include <rupture/base/binary_io.h>
 #include <rupture/boundary_integral/quasi_dynamic_fault.h>
 
 #include <deal.II/base/exceptions.h>
@@ -198,9 +199,17 @@ namespace rupture
         {
           const unsigned int i   = row_begin + r;
           const double      *row = &stiffness[std::size_t(r) * n];
-          double             tau = tau0[i];
-          for (unsigned int j = 0; j < n; ++j)
-            tau += row[j] * relative[j];
+          // (Four partial sums: the additions of one row need not wait for
+          // each other, which makes the dense product about twice as fast
+          // without reordering anything between runs.)
+          double       sum[4] = {0, 0, 0, 0};
+          unsigned int j      = 0;
+          for (; j + 4 <= n; j += 4)
+            for (unsigned int l = 0; l < 4; ++l)
+              sum[l] += row[j + l] * relative[j + l];
+          for (; j < n; ++j)
+            sum[0] += row[j] * relative[j];
+          const double tau = tau0[i] + ((sum[0] + sum[1]) + (sum[2] + sum[3]));
           unpack_state(i, y, state);
           const double V = solve_rate(i, tau, state);
           velocity[i]    = V; // the next solve's first guess
@@ -302,6 +311,42 @@ namespace rupture
             std::min(shortest,
                      law.slip_scale(points[i], states[i]) / velocity[i]);
       return shortest;
+    }
+
+
+
+    void
+    QuasiDynamicFault::save(std::ostream &out) const
+    {
+      // (The guesses of all elements: they are the slip rates of the last
+      // evaluate(), except where a later stage of this rank changed them.)
+      BinaryIO::write(out,
+                      std::vector<std::vector<double>>{
+                        current, velocity, traction, event_start, event_peak});
+      BinaryIO::write(out, variables);
+    }
+
+
+
+    void
+    QuasiDynamicFault::load(std::istream &in)
+    {
+      std::vector<std::vector<double>> fields, state;
+      BinaryIO::read(in, fields);
+      BinaryIO::read(in, state);
+      AssertThrow(fields.size() == 5 && state.size() == n_variables,
+                  ExcMessage("The checkpoint's fault is damaged."));
+      for (const auto &f : fields)
+        AssertThrow(f.size() == n,
+                    ExcMessage("The checkpoint's fault has another number "
+                               "of elements than <Boundary integral/Fault "
+                               "depth> and <Element size> give."));
+      current     = fields[0];
+      velocity    = fields[1];
+      traction    = fields[2];
+      event_start = fields[3];
+      event_peak  = fields[4];
+      variables   = state;
     }
 
 

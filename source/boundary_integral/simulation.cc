@@ -1,14 +1,15 @@
 // The boundary-integral method's run: the time loop of the Dormand-Prince
 // pair and the cycle outputs as they grow.
 
+#include <rupture/base/binary_io.h>
 #include <rupture/base/interruption.h>
 #include <rupture/base/utilities.h>
+#include <rupture/boundary_integral/cycle_output.h>
 #include <rupture/boundary_integral/quasi_dynamic_fault.h>
 #include <rupture/boundary_integral/simulation.h>
 #include <rupture/fault/event_catalogue.h>
 #include <rupture/friction/interface.h>
 #include <rupture/output/directory.h>
-#include <rupture/output/seas_format.h>
 #include <rupture/time_integration/dormand_prince.h>
 
 #include <deal.II/base/function_parser.h>
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -83,17 +85,6 @@ namespace rupture
         return values[0];
       }
 
-      /// A station: the element above its depth and the weight of the one
-      /// below (linear interpolation between centres).
-      struct Station
-      {
-        std::string   name;
-        double        depth   = 0;
-        unsigned int  element = 0;
-        double        weight  = 0;
-        std::ofstream file;
-      };
-
       std::string
       number(const double x)
       {
@@ -106,7 +97,7 @@ namespace rupture
 
 
     void
-    run(ParameterHandler &prm, const MPI_Comm communicator)
+    run(ParameterHandler &prm, const MPI_Comm communicator, const bool resume)
     {
       const bool root =
         dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
@@ -215,7 +206,14 @@ namespace rupture
                              "minimum time step must be > 0, the maximum at "
                              "least the minimum, the growth factor > 1."));
 
-      QuasiDynamicFault   fault(geometry,
+      // Checkpoints.
+      prm.enter_subsection("Checkpoint");
+      const unsigned int checkpoint_steps = prm.get_integer("Interval");
+      const double checkpoint_minutes = prm.get_double("Wall-clock interval");
+      prm.leave_subsection();
+      const bool checkpoints = checkpoint_steps > 0 || checkpoint_minutes > 0;
+
+      QuasiDynamicFault                        fault(geometry,
                               *law,
                               sigma,
                               tau0,
@@ -223,93 +221,15 @@ namespace rupture
                               eta,
                               plate_rate,
                               communicator);
-      std::vector<double> y = fault.initial_values();
-      fault.evaluate(0, y);
-      double initial_slowest = 1e300, initial_fastest = 0;
-      for (unsigned int i = 0; i < geometry.size(); ++i)
-        {
-          initial_slowest = std::min(initial_slowest, fault.slip_rate(i));
-          initial_fastest = std::max(initial_fastest, fault.slip_rate(i));
-        }
-      std::vector<Station> stations;
-      for (const auto &[name, point] : station_points)
-        {
-          AssertThrow(std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
-                        -point[1] <=
-                          geometry.size() * geometry.element_length(),
-                      ExcMessage("The station <" + name +
-                                 "> of <Fault/Output/Stations> is not on "
-                                 "the fault: with <Method> = boundary "
-                                 "integral the fault is x = 0 between the "
-                                 "depths 0 and <Fault depth> (y from 0 down "
-                                 "to -W), e.g. 'bp1_st050: 0, -5000'."));
-          Station s;
-          s.name               = name;
-          s.depth              = -point[1];
-          const unsigned int n = geometry.size();
-          const double       position =
-            std::clamp(s.depth / geometry.element_length() - 0.5, 0., n - 1.);
-          s.element = n > 1 ? std::min<unsigned int>(position, n - 2) : 0;
-          s.weight  = n > 1 ? position - s.element : 0.;
-          stations.push_back(std::move(s));
-        }
-
-      // Every input is checked: the output directory.
-      const std::string directory_name = prm.get("Output directory");
-      Output::Directory::check_name(directory_name, "Output directory");
-      Output::Directory directory(directory_name, communicator);
-      directory.open();
-      std::ofstream statistics, profiles;
-      if (root)
-        {
-          std::ostringstream parameters;
-          prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-          directory.write("parameters.prm", parameters.str());
-          statistics.open(directory.record("statistics.dat"));
-          statistics << "# rupture, boundary-integral method: one row per "
-                        "sampled step\n"
-                     << "# 1: Step\n# 2: Time (s)\n# 3: Time step (s)\n"
-                     << "# 4: Maximum slip rate (m/s)\n"
-                     << "# 5: Rejected steps (so far)\n"
-                     << std::scientific << std::setprecision(10);
-          for (auto &s : stations)
-            {
-              s.file.open(directory.record(s.name + ".dat"));
-              s.file << Output::seas_station_header("on fault, " +
-                                                      number(s.depth / 1e3) +
-                                                      " km depth",
-                                                    test_mode)
-                     << std::scientific << std::setprecision(7);
-            }
-          if (profile_slow > 0 || profile_fast > 0)
-            {
-              profiles.open(directory.record("slip_profiles.dat"));
-              profiles << "# Slip profiles: the first row holds 0, 0 and "
-                          "the depths (m) of the element centres; each "
-                          "further row t (s), the log10 of the largest slip "
-                          "rate (m/s), and the slip (m) at those depths.\n"
-                       << std::scientific << std::setprecision(7) << "0 0";
-              for (unsigned int i = 0; i < geometry.size(); ++i)
-                profiles << " " << geometry.centre(i);
-              profiles << "\n";
-            }
-        }
-
-      std::cout << std::flush;
-      if (root)
-        std::cout << "Boundary-integral method (the review paper's dual "
-                     "method): antiplane half-space, "
-                  << geometry.size() << " elements of "
-                  << geometry.element_length() << " m down to "
-                  << geometry.size() * geometry.element_length() / 1e3
-                  << " km, mu = " << mu << " Pa, eta = " << eta
-                  << " Pa s/m, V_p = " << plate_rate << " m/s; "
-                  << dealii::Utilities::MPI::n_mpi_processes(communicator)
-                  << " rank(s)\n"
-                  << "  initial slip rates from " << initial_slowest << " to "
-                  << initial_fastest << " m/s\n"
-                  << std::flush;
-
+      CycleOutput                              output(geometry,
+                         station_points,
+                         {sampling_change,
+                                                       sampling_interval,
+                                                       profile_slow,
+                                                       profile_fast,
+                                                       event_rate},
+                         test_mode,
+                         communicator);
       TimeIntegration::DormandPrince::Settings tolerance = settings;
       tolerance.absolute_tolerance =
         fault.absolute_tolerances(absolute, absolute);
@@ -319,69 +239,132 @@ namespace rupture
             std::vector<double>       &r) { fault.rates(t, v, r); },
         tolerance);
 
-      // Outputs at an accepted state.
-      double last_row_rate = -1, last_row_time = 0;
-      double last_profile = -1e300;
-      // The step of the last row and of the last profile (a forced row
-      // is not written twice).
-      long          rows_step = -1, profile_step = -1;
-      unsigned long steps  = 0;
-      double        dt_min = 1e300, dt_max = 0, last_dt = 0;
-      const auto    write_rows = [&](const double t, const bool force) {
-        const double vmax = fault.max_slip_rate();
-        const double change =
-          std::abs(std::log10(std::max(vmax, 1e-300)) -
-                   std::log10(std::max(last_row_rate, 1e-300)));
-        if ((force || sampling_change == 0 || change >= sampling_change ||
-             t - last_row_time >= sampling_interval) &&
-            rows_step != long(steps))
+      // The state of the loop, all of it in a checkpoint.
+      std::vector<double> y = fault.initial_values();
+      double              t = 0, dt = first_step, last_dt = 0;
+      double              dt_min = 1e300, dt_max = 0;
+      unsigned long       steps = 0, n_events = 0;
+      const std::string   directory_name  = prm.get("Output directory");
+      const std::string   checkpoint_name = "checkpoint/boundary_integral.bin";
+      const std::string   previous_name =
+        "checkpoint/boundary_integral.previous.bin";
+      const char *const tag = "rupture boundary-integral checkpoint 1";
+      if (resume)
+        {
+          const std::string path = directory_name + "/" + checkpoint_name;
+          std::ifstream     in(path, std::ios::binary);
+          AssertThrow(in.good(),
+                      ExcMessage("--resume: there is no checkpoint <" + path +
+                                 "> to continue from. A run writes one with "
+                                 "<Checkpoint/Interval> or <Wall-clock "
+                                 "interval>."));
+          std::string         read_tag;
+          std::vector<double> scalars;
+          BinaryIO::read(in, read_tag);
+          AssertThrow(read_tag == tag,
+                      ExcMessage("--resume: <" + path +
+                                 "> is not a checkpoint of the "
+                                 "boundary-integral method."));
+          BinaryIO::read(in, scalars);
+          AssertThrow(scalars.size() == 8 && scalars[7] == geometry.size(),
+                      ExcMessage("--resume: the checkpoint <" + path +
+                                 "> has another number of elements than "
+                                 "<Boundary integral/Fault depth> and "
+                                 "<Element size> give."));
+          t        = scalars[0];
+          dt       = scalars[1];
+          last_dt  = scalars[2];
+          dt_min   = scalars[3];
+          dt_max   = scalars[4];
+          steps    = static_cast<unsigned long>(scalars[5]);
+          n_events = static_cast<unsigned long>(scalars[6]);
+          BinaryIO::read(in, y);
+          integrator.load(in);
+          fault.load(in);
+          events.load(in);
+          output.load(in);
+          AssertThrow(in.good() && y.size() == fault.initial_values().size(),
+                      ExcMessage("--resume: the checkpoint <" + path +
+                                 "> is damaged."));
+        }
+      else
+        fault.evaluate(0, y);
+      double initial_slowest = 1e300, initial_fastest = 0;
+      for (unsigned int i = 0; i < geometry.size(); ++i)
+        {
+          initial_slowest = std::min(initial_slowest, fault.slip_rate(i));
+          initial_fastest = std::max(initial_fastest, fault.slip_rate(i));
+        }
+
+      // Every input is checked: the output directory.
+      Output::Directory::check_name(directory_name, "Output directory");
+      Output::Directory directory(directory_name, communicator);
+      directory.open(resume);
+      if (root)
+        {
+          std::ostringstream parameters;
+          prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+          directory.write("parameters.prm", parameters.str());
+        }
+      output.open(directory, resume);
+
+      std::cout << std::flush;
+      if (root)
+        {
+          std::cout << std::setprecision(6)
+                    << "Boundary-integral method (the review paper's dual "
+                       "method): antiplane half-space, "
+                    << geometry.size() << " elements of "
+                    << geometry.element_length() << " m down to "
+                    << geometry.size() * geometry.element_length() / 1e3
+                    << " km, mu = " << mu << " Pa, eta = " << eta
+                    << " Pa s/m, V_p = " << plate_rate << " m/s; "
+                    << dealii::Utilities::MPI::n_mpi_processes(communicator)
+                    << " rank(s)\n";
+          if (resume)
+            std::cout << "  continued from the checkpoint at t = " << t
+                      << " s (step " << steps << ")\n";
+          else
+            std::cout << "  initial slip rates from " << initial_slowest
+                      << " to " << initial_fastest << " m/s\n";
+          std::cout << std::flush;
+        }
+      if (!resume)
+        output.record(0, 0, 0, 0, fault, true);
+
+      auto       last_checkpoint  = std::chrono::steady_clock::now();
+      const auto write_checkpoint = [&]() {
+        std::ostringstream out;
+        BinaryIO::write(out, std::string(tag));
+        BinaryIO::write(out,
+                        std::vector<double>{t,
+                                            dt,
+                                            last_dt,
+                                            dt_min,
+                                            dt_max,
+                                            double(steps),
+                                            double(n_events),
+                                            double(geometry.size())});
+        BinaryIO::write(out, y);
+        integrator.save(out);
+        fault.save(out);
+        events.save(out);
+        output.save(out);
+        // The newest and the one before are kept (a checkpoint that a
+        // killed run left half written is never the only one).
+        if (root)
           {
-            rows_step     = steps;
-            last_row_rate = vmax;
-            last_row_time = t;
-            if (root)
-              {
-                statistics << steps << " " << t << " " << last_dt << " " << vmax
-                           << " " << integrator.rejected_steps() << "\n";
-                for (auto &s : stations)
-                  {
-                    const unsigned int i = s.element;
-                    const unsigned int j =
-                      std::min<unsigned int>(i + 1, fault.size() - 1);
-                    const auto mix = [&](const double a, const double b) {
-                      return (1 - s.weight) * a + s.weight * b;
-                    };
-                    const double state = mix(std::log10(fault.state(i)),
-                                             std::log10(fault.state(j)));
-                    s.file << Output::seas_station_row(
-                      t,
-                      mix(fault.slip(i), fault.slip(j)),
-                      mix(fault.slip_rate(i), fault.slip_rate(j)),
-                      mix(fault.shear_stress(i), fault.shear_stress(j)) / 1e6,
-                      state);
-                  }
-              }
+            const std::string newest = directory.record(checkpoint_name);
+            const std::string before = directory.record(previous_name);
+            std::error_code   error;
+            if (std::filesystem::exists(newest))
+              std::filesystem::rename(newest, before, error);
+            directory.write(checkpoint_name, out.str());
           }
-        const double interval =
-          vmax >= event_rate ? profile_fast : profile_slow;
-        if (root && profiles.is_open() &&
-            (force || (interval > 0 && t - last_profile >= interval)) &&
-            profile_step != long(steps))
-          {
-            profile_step = steps;
-            last_profile = t;
-            profiles << t << " " << std::log10(std::max(vmax, 1e-300));
-            for (unsigned int i = 0; i < fault.size(); ++i)
-              profiles << " " << fault.slip(i);
-            profiles << "\n";
-          }
+        last_checkpoint = std::chrono::steady_clock::now();
       };
-      write_rows(0, true);
 
-
-      double       t = 0, dt = first_step;
-      unsigned int n_events    = 0;
-      double       next_report = 0.1 * end_time;
+      double next_report = (std::floor(10 * t / end_time) + 1) * 0.1 * end_time;
       while (t < end_time)
         {
           last_dt = integrator.advance(t, y, dt, end_time);
@@ -390,7 +373,12 @@ namespace rupture
           dt_max = std::max(dt_max, last_dt);
           fault.evaluate(t, y);
           const bool ended = events.record(fault, t);
-          write_rows(t, t >= end_time);
+          output.record(t,
+                        steps,
+                        last_dt,
+                        integrator.rejected_steps(),
+                        fault,
+                        t >= end_time);
           if (ended)
             {
               ++n_events;
@@ -409,24 +397,47 @@ namespace rupture
                         << std::flush;
               next_report += 0.1 * end_time;
             }
-          if (Interruption::requested() != 0)
+          const bool done = max_events > 0 && n_events >= max_events;
+          if (done)
+            output.record(
+              t, steps, last_dt, integrator.rejected_steps(), fault, true);
+          // (Rank 0's clock decides for all.)
+          const bool minutes_passed = dealii::Utilities::MPI::max(
+            int(checkpoint_minutes > 0 &&
+                std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                              last_checkpoint)
+                    .count() >= 60 * checkpoint_minutes &&
+                root),
+            communicator);
+          // (SIGUSR1: a checkpoint now, and the run goes on.)
+          const bool requested = dealii::Utilities::MPI::max(
+            int(Interruption::take_checkpoint_request()), communicator);
+          if (requested || (checkpoints && ((checkpoint_steps > 0 &&
+                                             steps % checkpoint_steps == 0) ||
+                                            minutes_passed)))
+            write_checkpoint();
+          // (Together: a signal that reached one rank stops all.)
+          const int signal =
+            dealii::Utilities::MPI::max(Interruption::requested(),
+                                        communicator);
+          if (signal != 0)
             {
               events.write(fault, directory);
-              throw Interruption::Stopped(Interruption::requested(),
-                                          "Stopped by " +
-                                            Interruption::signal_name(
-                                              Interruption::requested()) +
-                                            " at t = " + number(t) +
-                                            " s; the files written so far "
-                                            "hold the run up to there.");
+              if (checkpoints)
+                write_checkpoint();
+              throw Interruption::Stopped(
+                signal,
+                "Stopped by " + Interruption::signal_name(signal) +
+                  " at t = " + number(t) + " s (step " + std::to_string(steps) +
+                  "); the files written so far hold the run up to there" +
+                  (checkpoints ? ", and --resume continues it." : "."));
             }
-          if (max_events > 0 && n_events >= max_events)
-            {
-              write_rows(t, true);
-              break;
-            }
+          if (done)
+            break;
         }
       events.write(fault, directory);
+      if (checkpoints)
+        write_checkpoint();
       if (root)
         {
           const double wall = std::chrono::duration<double>(

@@ -496,12 +496,11 @@ namespace rupture
         const unsigned int           dimension = prm.get_integer("Dimension");
         if (BoundaryIntegral::chosen(prm))
           {
-            AssertThrow(!resume,
-                        ExcMessage("--resume: the boundary-integral method "
-                                   "(<Method> = boundary integral) writes no "
-                                   "checkpoints yet, so it cannot continue a "
-                                   "run."));
-            BoundaryIntegral::run(prm, communicator);
+            AssertThrow(refinements == 0,
+                        ExcMessage("--refine: the boundary-integral method "
+                                   "(<Method> = boundary integral) has no "
+                                   "mesh to refine."));
+            BoundaryIntegral::run(prm, communicator, resume);
           }
         else if (dimension == 2)
           run_simulation<2>(prm, communicator, resume, refinements);

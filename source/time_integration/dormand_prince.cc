@@ -1,5 +1,6 @@
 // The Dormand-Prince 5(4) pair with its step controller.
 
+#include <rupture/base/binary_io.h>
 #include <rupture/time_integration/dormand_prince.h>
 
 #include <deal.II/base/exceptions.h>
@@ -132,6 +133,33 @@ namespace rupture
               AssertThrow(false, dealii::ExcMessage(message.str()));
             }
         }
+    }
+
+
+
+    void
+    DormandPrince::save(std::ostream &out) const
+    {
+      BinaryIO::write(out,
+                      std::vector<double>{double(have_first_stage),
+                                          double(n_rejected)});
+      BinaryIO::write(out, have_first_stage ? k[0] : std::vector<double>());
+    }
+
+
+
+    void
+    DormandPrince::load(std::istream &in)
+    {
+      std::vector<double> scalars;
+      BinaryIO::read(in, scalars);
+      AssertThrow(scalars.size() == 2,
+                  dealii::ExcMessage("The checkpoint's time integrator is "
+                                     "damaged."));
+      have_first_stage = scalars[0] != 0;
+      n_rejected       = static_cast<unsigned long>(scalars[1]);
+      k.resize(7);
+      BinaryIO::read(in, k[0]);
     }
   } // namespace TimeIntegration
 } // namespace rupture

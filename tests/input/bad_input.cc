@@ -351,7 +351,7 @@ main(int argc, char **argv)
         boundary_integral("Boundary integral/Normal stress=-1e6"));
   auto resumed = boundary_integral("Boundary integral/Element size=400");
   resumed.push_back("--resume");
-  check("the boundary-integral method continued with --resume", resumed);
+  check("the boundary-integral method continued without a checkpoint", resumed);
   check("missing parameter file", {"no-such-file.prm"});
   check("no parameter file", {});
   check("unknown option", {"--frobnicate", "valid.prm"});

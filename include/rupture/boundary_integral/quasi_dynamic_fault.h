@@ -7,6 +7,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <iosfwd>
 #include <vector>
 
 namespace rupture
@@ -118,6 +119,13 @@ namespace rupture
       /// min over the elements of the law's slip scale over V (s).
       double
       state_evolution_time() const;
+
+      /// Write what evaluate() computed, the first guesses of the slip-rate
+      /// solves and the open event (a checkpoint), and read it back.
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
 
       // The event catalogue's questions (Fault::EventSource).
       std::pair<double, Point<2>>

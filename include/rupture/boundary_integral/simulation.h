@@ -32,10 +32,13 @@ namespace rupture
      * step bounds of <Time integration>), integrate the fault's slip and
      * state with the Dormand-Prince pair to the end time (or the given
      * number of events), and write the stations, the slip profiles, the
-     * statistics and events.csv as they grow. Collective.
+     * statistics and events.csv as they grow. With checkpoints
+     * (<Checkpoint/Interval> or <Wall-clock interval>) it writes
+     * <output>/checkpoint/boundary_integral.bin, from which @p resume
+     * continues the run to the last digit. Collective.
      */
     void
-    run(ParameterHandler &prm, const MPI_Comm communicator);
+    run(ParameterHandler &prm, const MPI_Comm communicator, const bool resume);
   } // namespace BoundaryIntegral
 } // namespace rupture
 

@@ -2,6 +2,7 @@
 #define rupture_time_integration_dormand_prince_h
 
 #include <functional>
+#include <iosfwd>
 #include <vector>
 
 namespace rupture
@@ -61,6 +62,14 @@ namespace rupture
       {
         return n_rejected;
       }
+
+      /// Write the first stage of the next step and the count of
+      /// rejections (a checkpoint), so that a continued run takes the same
+      /// steps to the last digit; and read them back.
+      void
+      save(std::ostream &out) const;
+      void
+      load(std::istream &in);
 
       /// Forget the stored first stage (after y was changed from outside).
       void

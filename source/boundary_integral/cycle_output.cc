@@ -1,0 +1,258 @@
+// The series of a boundary-integral cycle run, appended as they grow.
+
+#include <rupture/base/binary_io.h>
+#include <rupture/boundary_integral/cycle_output.h>
+#include <rupture/output/directory.h>
+#include <rupture/output/seas_format.h>
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace rupture
+{
+  namespace BoundaryIntegral
+  {
+    namespace
+    {
+      std::string
+      number(const double x)
+      {
+        std::ostringstream s;
+        s << std::setprecision(10) << x;
+        return s.str();
+      }
+    } // namespace
+
+
+
+    CycleOutput::CycleOutput(
+      const AntiplaneHalfSpace                            &geometry,
+      const std::vector<std::pair<std::string, Point<2>>> &points,
+      const Sampling                                      &sampling,
+      const bool                                           test_mode,
+      const MPI_Comm                                       communicator)
+      : geometry(geometry)
+      , sampling(sampling)
+      , test_mode(test_mode)
+      , root(dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      , stations(points.size())
+    {
+      const unsigned int n = geometry.size();
+      for (unsigned int k = 0; k < points.size(); ++k)
+        {
+          const auto &[name, point] = points[k];
+          AssertThrow(std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
+                        -point[1] <= n * geometry.element_length(),
+                      dealii::ExcMessage(
+                        "The station <" + name +
+                        "> of <Fault/Output/Stations> is not on the fault: "
+                        "with <Method> = boundary integral the fault is x = "
+                        "0 between the depths 0 and <Fault depth> (y from 0 "
+                        "down to -W), e.g. 'bp1_st050: 0, -5000'."));
+          Station &s = stations[k];
+          s.name     = name;
+          s.depth    = -point[1];
+          const double position =
+            std::clamp(s.depth / geometry.element_length() - 0.5, 0., n - 1.);
+          s.element = n > 1 ? std::min<unsigned int>(position, n - 2) : 0;
+          s.weight  = n > 1 ? position - s.element : 0.;
+        }
+    }
+
+
+
+    void
+    CycleOutput::open_file(std::ofstream      &file,
+                           const std::string  &path,
+                           const bool          continuing,
+                           const std::uint64_t length)
+    {
+      if (continuing)
+        {
+          std::error_code error;
+          std::filesystem::resize_file(path, length, error);
+          AssertThrow(!error,
+                      dealii::ExcMessage(
+                        "The continued run cannot cut <" + path +
+                        "> back to the checkpoint's " + std::to_string(length) +
+                        " bytes: " + error.message() +
+                        ". The output directory must hold the files of the "
+                        "run that wrote the checkpoint."));
+          file.open(path, std::ios::app);
+        }
+      else
+        file.open(path);
+      AssertThrow(file.good(),
+                  dealii::ExcMessage("Cannot write <" + path + ">."));
+    }
+
+
+
+    void
+    CycleOutput::open(Output::Directory &directory, const bool continuing)
+    {
+      if (!root)
+        return;
+      const bool with_profiles =
+        sampling.profile_between > 0 || sampling.profile_during > 0;
+      AssertThrow(!continuing || lengths.size() == 2 + stations.size(),
+                  dealii::ExcMessage("The checkpoint has another number of "
+                                     "stations than <Fault/Output/Stations> "
+                                     "gives."));
+      statistics_path = directory.record("statistics.dat");
+      open_file(statistics,
+                statistics_path,
+                continuing,
+                continuing ? lengths[0] : 0);
+      statistics << std::scientific << std::setprecision(10);
+      if (!continuing)
+        statistics << "# rupture, boundary-integral method: one row per "
+                      "sampled step\n"
+                   << "# 1: Step\n# 2: Time (s)\n# 3: Time step (s)\n"
+                   << "# 4: Maximum slip rate (m/s)\n"
+                   << "# 5: Rejected steps (so far)\n";
+      if (with_profiles)
+        {
+          profiles_path = directory.record("slip_profiles.dat");
+          open_file(profiles,
+                    profiles_path,
+                    continuing,
+                    continuing ? lengths[1] : 0);
+          profiles << std::scientific << std::setprecision(7);
+          if (!continuing)
+            {
+              profiles << "# Slip profiles: the first row holds 0, 0 and the "
+                          "depths (m) of the element centres; each further "
+                          "row t (s), the log10 of the largest slip rate "
+                          "(m/s), and the slip (m) at those depths.\n0 0";
+              for (unsigned int i = 0; i < geometry.size(); ++i)
+                profiles << " " << geometry.centre(i);
+              profiles << "\n";
+            }
+        }
+      for (unsigned int k = 0; k < stations.size(); ++k)
+        {
+          Station &s = stations[k];
+          s.path     = directory.record(s.name + ".dat");
+          open_file(s.file,
+                    s.path,
+                    continuing,
+                    continuing ? lengths[2 + k] : 0);
+          if (!continuing)
+            s.file << Output::seas_station_header(
+              "on fault, " + number(s.depth / 1e3) + " km depth", test_mode);
+        }
+    }
+
+
+
+    void
+    CycleOutput::record(const double             t,
+                        const unsigned long      step,
+                        const double             dt,
+                        const unsigned long      rejected,
+                        const QuasiDynamicFault &fault,
+                        const bool               force)
+    {
+      const double vmax = fault.max_slip_rate();
+      const double change =
+        std::abs(std::log10(std::max(vmax, 1e-300)) -
+                 std::log10(std::max(last_row_rate, 1e-300)));
+      if ((force || sampling.rate_change == 0 ||
+           change >= sampling.rate_change ||
+           t - last_row_time >= sampling.interval) &&
+          rows_step != long(step))
+        {
+          rows_step     = step;
+          last_row_rate = vmax;
+          last_row_time = t;
+          if (root)
+            {
+              statistics << step << " " << t << " " << dt << " " << vmax << " "
+                         << rejected << "\n";
+              for (auto &s : stations)
+                {
+                  const unsigned int i = s.element;
+                  const unsigned int j =
+                    std::min<unsigned int>(i + 1, fault.size() - 1);
+                  const auto mix = [&](const double a, const double b) {
+                    return (1 - s.weight) * a + s.weight * b;
+                  };
+                  s.file << Output::seas_station_row(
+                    t,
+                    mix(fault.slip(i), fault.slip(j)),
+                    mix(fault.slip_rate(i), fault.slip_rate(j)),
+                    mix(fault.shear_stress(i), fault.shear_stress(j)) / 1e6,
+                    mix(std::log10(fault.state(i)),
+                        std::log10(fault.state(j))));
+                }
+            }
+        }
+      const double interval = vmax >= sampling.event_rate ?
+                                sampling.profile_during :
+                                sampling.profile_between;
+      if (root && profiles.is_open() &&
+          (force || (interval > 0 && t - last_profile >= interval)) &&
+          profile_step != long(step))
+        {
+          profile_step = step;
+          last_profile = t;
+          profiles << t << " " << std::log10(std::max(vmax, 1e-300));
+          for (unsigned int i = 0; i < fault.size(); ++i)
+            profiles << " " << fault.slip(i);
+          profiles << "\n";
+        }
+    }
+
+
+
+    void
+    CycleOutput::save(std::ostream &out)
+    {
+      std::vector<double> state = {last_row_rate,
+                                   last_row_time,
+                                   last_profile,
+                                   double(rows_step),
+                                   double(profile_step)};
+      // The files' lengths (rank 0's; 0 elsewhere).
+      const auto length = [](std::ofstream     &file,
+                             const std::string &path) -> double {
+        if (!file.is_open())
+          return 0;
+        file.flush();
+        return double(std::filesystem::file_size(path));
+      };
+      state.push_back(length(statistics, statistics_path));
+      state.push_back(length(profiles, profiles_path));
+      for (auto &s : stations)
+        state.push_back(length(s.file, s.path));
+      BinaryIO::write(out, state);
+    }
+
+
+
+    void
+    CycleOutput::load(std::istream &in)
+    {
+      std::vector<double> state;
+      BinaryIO::read(in, state);
+      AssertThrow(state.size() == 7 + stations.size(),
+                  dealii::ExcMessage(
+                    "The checkpoint has another number of stations than "
+                    "<Fault/Output/Stations> gives."));
+      last_row_rate = state[0];
+      last_row_time = state[1];
+      last_profile  = state[2];
+      rows_step     = long(state[3]);
+      profile_step  = long(state[4]);
+      lengths.clear();
+      for (unsigned int k = 5; k < state.size(); ++k)
+        lengths.push_back(static_cast<std::uint64_t>(state[k]));
+    }
+  } // namespace BoundaryIntegral
+} // namespace rupture
