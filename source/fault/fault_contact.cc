@@ -59,12 +59,14 @@ namespace rupture
           else
             {
               // The shear traction of the step's start, for the centred
-              // friction: the initial one and the springs' stretch (slip
-              // minus plastic slip) of the last accepted step.
-              const Tensor<1, dim> old_shear =
-                pair.initial_traction -
-                (pair.initial_traction * pair.normal) * pair.normal +
-                pair.tangential_penalty * (pair.slip - pair.plastic_slip);
+              // friction only: the initial one and the springs' stretch
+              // (slip minus plastic slip) of the last accepted step.
+              Tensor<1, dim> old_shear;
+              if (centred_penalty)
+                old_shear =
+                  pair.initial_traction -
+                  (pair.initial_traction * pair.normal) * pair.normal +
+                  pair.tangential_penalty * (pair.slip - pair.plastic_slip);
               pair.trial =
                 return_map<dim>(delta,
                                 pair.normal,

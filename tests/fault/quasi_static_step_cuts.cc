@@ -11,6 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include "../spring_slider_reference.h"
 #include "../tests.h"
 
 #include <cmath>
@@ -41,22 +42,14 @@ main(int argc, char **argv)
 
   // Events: the slip rate passes 1 mm/s (interpolated in ln V).
   const auto          rows = tests::read_statistics("cuts/statistics");
-  std::vector<double> starts;
-  bool                on = false;
-  for (unsigned int i = 1; i < rows.size(); ++i)
+  std::vector<double> t, V;
+  for (const auto &r : rows)
     {
-      const double V0 = rows[i - 1][15], V1 = rows[i][15];
-      if (!on && V1 >= 1e-3)
-        {
-          const double w = (std::log(1e-3) - std::log(std::max(V0, 1e-300))) /
-                           (std::log(V1) - std::log(std::max(V0, 1e-300)));
-          starts.push_back(rows[i - 1][1] + w * (rows[i][1] - rows[i - 1][1]));
-          on = true;
-        }
-      if (V1 < 1e-4)
-        on = false;
+      t.push_back(r[1]);
+      V.push_back(r[15]);
     }
-  const double year = 3.15576e7;
+  const std::vector<double> starts = slider_reference::find_events(t, V).start;
+  const double              year   = 3.15576e7;
   std::printf("events: %zu; the second at the slider's time within 0.5 %%: "
               "%s\n",
               starts.size(),
