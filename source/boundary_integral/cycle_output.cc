@@ -75,6 +75,15 @@ namespace rupture
       if (continuing)
         {
           std::error_code error;
+          const auto      size = std::filesystem::file_size(path, error);
+          AssertThrow(!error && size >= length,
+                      dealii::ExcMessage(
+                        "The continued run finds <" + path + "> " +
+                        (error ? "missing" :
+                                 "shorter than the checkpoint's " +
+                                   std::to_string(length) + " bytes") +
+                        ". The output directory must hold the files of the "
+                        "run that wrote the checkpoint."));
           std::filesystem::resize_file(path, length, error);
           AssertThrow(!error,
                       dealii::ExcMessage(
@@ -173,7 +182,8 @@ namespace rupture
           last_row_time = t;
           if (root)
             {
-              statistics << step << " " << t << " " << dt << " " << vmax << " "
+              statistics << step << " " << std::setprecision(15) << t << " "
+                         << std::setprecision(10) << dt << " " << vmax << " "
                          << rejected << "\n";
               for (auto &s : stations)
                 {
@@ -202,7 +212,8 @@ namespace rupture
         {
           profile_step = step;
           last_profile = t;
-          profiles << t << " " << std::log10(std::max(vmax, 1e-300));
+          profiles << std::setprecision(15) << t << std::setprecision(7) << " "
+                   << std::log10(std::max(vmax, 1e-300));
           for (unsigned int i = 0; i < fault.size(); ++i)
             profiles << " " << fault.slip(i);
           profiles << "\n";

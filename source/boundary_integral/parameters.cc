@@ -78,12 +78,6 @@ namespace rupture
                           "matter: metres for the slip, and for the "
                           "logarithm of a state variable that spans "
                           "decades.");
-        prm.declare_entry("Maximum number of events",
-                          "0",
-                          Patterns::Integer(0),
-                          "End the run when this many events have ended "
-                          "(0: at <Time integration/End time> only). "
-                          "Events as in <Fault/Output/Event slip rate>.");
         prm.declare_entry(
           "Sampling slip rate change",
           "0",

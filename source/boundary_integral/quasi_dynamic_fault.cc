@@ -145,15 +145,12 @@ namespace rupture
       double dg = 0;
       if (target == 0 || g(0., dg) <= 0)
         return 0;
-      double lo = 0, hi = 0;
-      if (eta > 0)
-        hi = target / eta;
-      else
-        {
-          hi = 1e-9;
-          for (unsigned int k = 0; k < 400 && g(hi, dg) > 0; ++k)
-            hi *= 2;
-        }
+      // (|tau| / eta brackets the root where the strength is not negative
+      // there; the logarithmic law's can be, at a tiny state: then, and
+      // without damping, the bracket grows until it holds the root.)
+      double lo = 0, hi = eta > 0 ? target / eta : 1e-9;
+      for (unsigned int k = 0; k < 400 && g(hi, dg) > 0; ++k)
+        hi *= 2;
       // Newton in ln V, kept inside the bracket, bisecting (in ln V once
       // the bracket's low end is positive) where a step would leave it.
       double V = velocity[i];
@@ -248,6 +245,15 @@ namespace rupture
     {
       std::vector<double> rate;
       rates(t, y, rate);
+      accept(y, rate);
+    }
+
+
+
+    void
+    QuasiDynamicFault::accept(const std::vector<double> &y,
+                              const std::vector<double> &rate)
+    {
       std::vector<double> owned(traction.begin() + row_begin,
                                 traction.begin() + row_end);
       const int           ierr = MPI_Allgatherv(owned.data(),

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -83,6 +84,33 @@ namespace rupture
         AssertThrow(!values.empty(),
                     ExcMessage("<Material/" + entry + "> is empty."));
         return values[0];
+      }
+
+      /**
+       * Run @p action on rank 0 and throw its error on every rank (a
+       * failure to write a file must not leave the others waiting in the
+       * next collective call).
+       */
+      template <typename Action>
+      void
+      on_root(const MPI_Comm communicator, const Action &action)
+      {
+        std::string error;
+        if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+          try
+            {
+              action();
+            }
+          catch (const ExceptionBase &e)
+            {
+              error = Utilities::message_of(e);
+            }
+          catch (const std::exception &e)
+            {
+              error = e.what();
+            }
+        error = dealii::Utilities::MPI::broadcast(communicator, error, 0);
+        AssertThrow(error.empty(), ExcMessage(error));
       }
 
       std::string
@@ -189,8 +217,7 @@ namespace rupture
                     settings.relative_tolerance < 1 && absolute > 0,
                   ExcMessage("<Boundary integral/Relative tolerance> must lie "
                              "in (0, 1) and <Absolute tolerance> be > 0."));
-      const unsigned int max_events =
-        prm.get_integer("Maximum number of events");
+
       const double sampling_change =
         prm.get_double("Sampling slip rate change");
       const double sampling_interval = prm.get_double("Sampling interval");
@@ -205,6 +232,16 @@ namespace rupture
                   ExcMessage("<Time integration/Step controller>: the "
                              "minimum time step must be > 0, the maximum at "
                              "least the minimum, the growth factor > 1."));
+
+      // The end: <Termination/Number of events> (the one criterion of
+      // <Termination> that a cycle run of this method uses).
+      prm.enter_subsection("Termination");
+      const unsigned int max_events = prm.get_integer("Number of events");
+      prm.leave_subsection();
+      AssertThrow(max_events == 0 || events.enabled(),
+                  ExcMessage("<Termination/Number of events> counts the "
+                             "events of the event catalogue: set "
+                             "<Fault/Output/Event catalogue> = true."));
 
       // Checkpoints.
       prm.enter_subsection("Checkpoint");
@@ -251,13 +288,33 @@ namespace rupture
       const char *const tag = "rupture boundary-integral checkpoint 1";
       if (resume)
         {
-          const std::string path = directory_name + "/" + checkpoint_name;
-          std::ifstream     in(path, std::ios::binary);
-          AssertThrow(in.good(),
-                      ExcMessage("--resume: there is no checkpoint <" + path +
-                                 "> to continue from. A run writes one with "
-                                 "<Checkpoint/Interval> or <Wall-clock "
-                                 "interval>."));
+          // Rank 0 reads the newest checkpoint (or, if a run was killed
+          // between writing one and renaming it, the one before) and
+          // sends it to the others.
+          std::string path, bytes;
+          on_root(communicator, [&]() {
+            for (const std::string &name : {checkpoint_name, previous_name})
+              {
+                path = directory_name + "/" + name;
+                std::ifstream file(path, std::ios::binary);
+                if (file)
+                  {
+                    std::ostringstream content;
+                    content << file.rdbuf();
+                    bytes = content.str();
+                    return;
+                  }
+              }
+            AssertThrow(false,
+                        ExcMessage("--resume: there is no checkpoint <" +
+                                   directory_name + "/" + checkpoint_name +
+                                   "> to continue from. A run writes one "
+                                   "with <Checkpoint/Interval> or "
+                                   "<Wall-clock interval>."));
+          });
+          path  = dealii::Utilities::MPI::broadcast(communicator, path, 0);
+          bytes = dealii::Utilities::MPI::broadcast(communicator, bytes, 0);
+          std::istringstream  in(bytes);
           std::string         read_tag;
           std::vector<double> scalars;
           BinaryIO::read(in, read_tag);
@@ -300,13 +357,14 @@ namespace rupture
       Output::Directory::check_name(directory_name, "Output directory");
       Output::Directory directory(directory_name, communicator);
       directory.open(resume);
-      if (root)
-        {
-          std::ostringstream parameters;
-          prm.print_parameters(parameters, ParameterHandler::ShortPRM);
-          directory.write("parameters.prm", parameters.str());
-        }
-      output.open(directory, resume);
+      on_root(communicator, [&]() {
+        std::ostringstream parameters;
+        prm.print_parameters(parameters, ParameterHandler::ShortPRM);
+        directory.write("parameters.prm", parameters.str());
+        output.open(directory, resume);
+        // (A continued run's catalogue as the checkpoint has it.)
+        events.write(fault, directory);
+      });
 
       std::cout << std::flush;
       if (root)
@@ -332,8 +390,14 @@ namespace rupture
       if (!resume)
         output.record(0, 0, 0, 0, fault, true);
 
-      auto       last_checkpoint  = std::chrono::steady_clock::now();
+      auto last_checkpoint = std::chrono::steady_clock::now();
+      // (The step whose checkpoint is written: none yet, or the one the
+      // run continues from.)
+      unsigned long checkpoint_step =
+        resume ? steps : std::numeric_limits<unsigned long>::max();
       const auto write_checkpoint = [&]() {
+        if (checkpoint_step == steps)
+          return; // (This step's is written.)
         std::ostringstream out;
         BinaryIO::write(out, std::string(tag));
         BinaryIO::write(out,
@@ -349,18 +413,24 @@ namespace rupture
         integrator.save(out);
         fault.save(out);
         events.save(out);
-        output.save(out);
-        // The newest and the one before are kept (a checkpoint that a
-        // killed run left half written is never the only one).
-        if (root)
-          {
-            const std::string newest = directory.record(checkpoint_name);
-            const std::string before = directory.record(previous_name);
-            std::error_code   error;
-            if (std::filesystem::exists(newest))
-              std::filesystem::rename(newest, before, error);
-            directory.write(checkpoint_name, out.str());
-          }
+        on_root(communicator, [&]() {
+          output.save(out);
+          // The newest and the one before are kept: the new one is
+          // written whole under a name of its own, then the newest
+          // becomes the one before and the new one the newest (a run
+          // killed between the two renames leaves the one before, which
+          // --resume takes).
+          const std::string writing =
+            directory.record("checkpoint/boundary_integral.writing.bin");
+          const std::string newest = directory.record(checkpoint_name);
+          const std::string before = directory.record(previous_name);
+          directory.write("checkpoint/boundary_integral.writing.bin",
+                          out.str());
+          if (std::filesystem::exists(newest))
+            std::filesystem::rename(newest, before);
+          std::filesystem::rename(writing, newest);
+        });
+        checkpoint_step = steps;
         last_checkpoint = std::chrono::steady_clock::now();
       };
 
@@ -371,7 +441,7 @@ namespace rupture
           ++steps;
           dt_min = std::min(dt_min, last_dt);
           dt_max = std::max(dt_max, last_dt);
-          fault.evaluate(t, y);
+          fault.accept(y, integrator.last_rate());
           const bool ended = events.record(fault, t);
           output.record(t,
                         steps,
@@ -382,7 +452,7 @@ namespace rupture
           if (ended)
             {
               ++n_events;
-              events.write(fault, directory);
+              on_root(communicator, [&]() { events.write(fault, directory); });
               if (root)
                 std::cout << "  event " << n_events
                           << " ended at t = " << std::setprecision(6)
@@ -422,7 +492,7 @@ namespace rupture
                                         communicator);
           if (signal != 0)
             {
-              events.write(fault, directory);
+              on_root(communicator, [&]() { events.write(fault, directory); });
               if (checkpoints)
                 write_checkpoint();
               throw Interruption::Stopped(
@@ -435,7 +505,7 @@ namespace rupture
           if (done)
             break;
         }
-      events.write(fault, directory);
+      on_root(communicator, [&]() { events.write(fault, directory); });
       if (checkpoints)
         write_checkpoint();
       if (root)

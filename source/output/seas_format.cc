@@ -46,9 +46,12 @@ namespace rupture
                      const double log10_state)
     {
       std::ostringstream out;
-      out << std::scientific << std::setprecision(7);
+      // (The time with 15 digits: an event of steps of milliseconds late
+      // in a cycle run of 10^10 s must not share one time stamp.)
+      out << std::scientific << std::setprecision(15) << time
+          << std::setprecision(7);
       const double magnitude = std::abs(rate);
-      out << time << " " << slip << " "
+      out << " " << slip << " "
           << (magnitude > 0 ? std::log10(magnitude) : -300.) << " "
           << shear_stress << " " << log10_state << "\n";
       return out.str();

@@ -425,6 +425,11 @@ namespace rupture
     elastic_system.set_fault(fault.get());
     newton.set_fault(fault.get());
     termination.parse_parameters(prm, fault != nullptr);
+    AssertThrow(!termination.uses_events() ||
+                  (fault_output && fault_output->has_event_catalogue()),
+                ExcMessage("<Termination/Number of events> counts the events "
+                           "of the event catalogue: set <Fault/Output/Event "
+                           "catalogue> = true."));
     prm.enter_subsection("Checkpoint");
     checkpoints.interval = prm.get_integer("Interval");
     checkpoints.minutes  = prm.get_double("Wall-clock interval");

@@ -128,6 +128,7 @@ namespace rupture
         s.max_slip_rate       = column(Output::Columns::max_slip_rate);
         s.seismic_moment      = column(Output::Columns::seismic_moment);
         s.mean_shear_traction = column(Output::Columns::mean_shear_traction);
+        s.events              = fault_output->n_events();
       }
     if (termination.uses_wall_clock())
       {

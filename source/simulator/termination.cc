@@ -43,6 +43,8 @@ namespace rupture
             return "steady state";
           case Reason::runaway:
             return "runaway";
+          case Reason::events:
+            return "number of events";
           case Reason::wall_clock:
             return "wall-clock limit";
         }
@@ -108,6 +110,14 @@ namespace rupture
           "End the run as a runaway rupture once the area slipping at once "
           "exceeds this (m^2; m in 2-D). 0 switches it off.");
         prm.declare_entry(
+          "Number of events",
+          "0",
+          Patterns::Integer(0),
+          "End the run once the event catalogue holds this many events "
+          "(earthquakes that have ended, <Fault/Output/Event catalogue>, "
+          "which it needs): earthquake cycles. 0 switches it off. With "
+          "<Method> = boundary integral too.");
+        prm.declare_entry(
           "Wall-clock limit",
           "0",
           Patterns::Double(0),
@@ -133,6 +143,7 @@ namespace rupture
       max_slip            = prm.get_double("Maximum slip");
       max_area            = prm.get_double("Maximum slipping area");
       wall_clock_minutes  = prm.get_double("Wall-clock limit");
+      max_events          = prm.get_integer("Number of events");
       prm.leave_subsection();
 
       const std::pair<const char *, double> values[] = {
@@ -164,7 +175,8 @@ namespace rupture
              {std::pair<const char *, double>{"Rupture died after", died_after},
               {"Maximum seismic moment", max_moment},
               {"Maximum slip", max_slip},
-              {"Maximum slipping area", max_area}})
+              {"Maximum slipping area", max_area},
+              {"Number of events", double(max_events)}})
           AssertThrow(value == 0,
                       ExcMessage(std::string("<Termination/") + entry +
                                  "> watches the fault, but this run has "
@@ -178,7 +190,8 @@ namespace rupture
     Criteria::any() const
     {
       return died_after > 0 || steady_window > 0 || max_moment > 0 ||
-             max_slip > 0 || max_area > 0 || wall_clock_minutes > 0;
+             max_slip > 0 || max_area > 0 || wall_clock_minutes > 0 ||
+             max_events > 0;
     }
 
 
@@ -208,6 +221,8 @@ namespace rupture
         s << "; slip above " << number(max_slip) << " m";
       if (max_area > 0)
         s << "; slipping area above " << number(max_area);
+      if (max_events > 0)
+        s << "; " << max_events << " events";
       if (wall_clock_minutes > 0)
         s << "; " << number(wall_clock_minutes) << " min of wall-clock time";
       const std::string text = s.str();
@@ -244,6 +259,13 @@ namespace rupture
         {
           started     = true;
           phase_start = sample.time;
+        }
+
+      if (max_events > 0 && sample.events >= max_events)
+        {
+          message = std::to_string(max_events) +
+                    " events have ended (<Termination/Number of events>).";
+          return Reason::events;
         }
 
       const std::tuple<double, double, const char *, const char *> limits[] = {

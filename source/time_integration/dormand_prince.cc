@@ -55,6 +55,8 @@ namespace rupture
       const std::size_t n = y.size();
       AssertThrow(settings.absolute_tolerance.size() == n,
                   dealii::ExcInternalError());
+      if (k[0].size() != n)
+        have_first_stage = false;
       for (auto &stage_rate : k)
         stage_rate.resize(n);
       stage.resize(n);
@@ -67,10 +69,12 @@ namespace rupture
       while (true)
         {
           dt = std::min(dt, settings.maximum_step);
-          // The last step lands on t_end exactly (and one nearly there is
-          // stretched to it rather than followed by a sliver).
+          // The last step lands on t_end exactly (and one within a
+          // millionth of a step of it is stretched to it rather than
+          // followed by a sliver; relative to the step, so that a rejected
+          // step is never stretched back to its old length).
           bool last = false;
-          if (t + dt >= t_end - 1e-12 * std::abs(t_end))
+          if (t_end - t <= dt * (1 + 1e-6))
             {
               dt   = t_end - t;
               last = true;
@@ -110,7 +114,20 @@ namespace rupture
           if (ratio <= 1)
             {
               const double taken = dt;
-              t                  = last ? t_end : t + dt;
+              // The time as a compensated (Kahan) sum of the steps: over
+              // 10^10 s of steps of milliseconds a plain sum drifts.
+              if (last)
+                {
+                  t            = t_end;
+                  compensation = 0;
+                }
+              else
+                {
+                  const double step = dt - compensation;
+                  const double sum  = t + step;
+                  compensation      = (sum - t) - step;
+                  t                 = sum;
+                }
               y.swap(stage);
               std::swap(k[0], k[6]);
               dt = taken * std::clamp(factor, 0.2, settings.maximum_growth);
@@ -142,7 +159,8 @@ namespace rupture
     {
       BinaryIO::write(out,
                       std::vector<double>{double(have_first_stage),
-                                          double(n_rejected)});
+                                          double(n_rejected),
+                                          compensation});
       BinaryIO::write(out, have_first_stage ? k[0] : std::vector<double>());
     }
 
@@ -153,11 +171,12 @@ namespace rupture
     {
       std::vector<double> scalars;
       BinaryIO::read(in, scalars);
-      AssertThrow(scalars.size() == 2,
+      AssertThrow(scalars.size() == 3,
                   dealii::ExcMessage("The checkpoint's time integrator is "
                                      "damaged."));
       have_first_stage = scalars[0] != 0;
       n_rejected       = static_cast<unsigned long>(scalars[1]);
+      compensation     = scalars[2];
       k.resize(7);
       BinaryIO::read(in, k[0]);
     }

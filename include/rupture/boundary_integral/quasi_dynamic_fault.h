@@ -82,6 +82,14 @@ namespace rupture
       void
       evaluate(const double t, const std::vector<double> &y);
 
+      /**
+       * The same for the unknowns @p y whose rates @p rate the last call
+       * of rates() computed (the integrator's last stage): no new solve.
+       * Collective.
+       */
+      void
+      accept(const std::vector<double> &y, const std::vector<double> &rate);
+
       unsigned int
       size() const
       {

@@ -52,6 +52,13 @@ namespace rupture
         return is_enabled;
       }
 
+      /// The number of events that have ended.
+      unsigned int
+      n_events() const
+      {
+        return rows.size();
+      }
+
       /**
        * After each accepted step at phase time @p time: start, follow or
        * end an event. Returns whether an event ended (the table is then

@@ -107,6 +107,13 @@ namespace rupture
         return events.enabled();
       }
 
+      /// The number of events that have ended (0 without a catalogue).
+      unsigned int
+      n_events() const
+      {
+        return events.n_events();
+      }
+
       /**
        * A loading phase starts: its fault surfaces are written as
        * fault/loading_NNNNN.vtu and listed in fault-loading.pvd.

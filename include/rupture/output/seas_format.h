@@ -18,7 +18,8 @@ namespace rupture
     seas_station_header(const std::string &location, const bool test_mode);
 
     /**
-     * One data row of such a file: the time (s), the slip (m), the log10
+     * One data row of such a file: the time (s, 15 digits), the slip (m,
+     * and the rest with 8), the log10
      * of the magnitude of the slip rate @p rate (m/s; -300 where it is 0),
      * the shear stress (MPa) and the log10 of the state (s).
      */

@@ -22,12 +22,13 @@ namespace rupture
       rupture_died,
       steady_state,
       runaway,
-      wall_clock
+      wall_clock,
+      events
     };
 
     /**
      * The name of @p reason in summary.json: "end time", "rupture died",
-     * "steady state", "runaway" or "wall-clock limit".
+     * "steady state", "runaway", "wall-clock limit" or "number of events".
      */
     std::string
     name(const Reason reason);
@@ -59,6 +60,8 @@ namespace rupture
       double seismic_moment      = 0;
       double max_slip            = 0;
       double slipping_area       = 0;
+      /// The number of events the event catalogue holds (ended ones).
+      double events = 0;
     };
 
     /**
@@ -94,6 +97,12 @@ namespace rupture
       any() const;
       bool
       uses_wall_clock() const;
+      /// Whether <Number of events> is set (it needs the event catalogue).
+      bool
+      uses_events() const
+      {
+        return max_events > 0;
+      }
 
       /**
        * A line for the screen that lists the criteria in force, or "".
@@ -126,14 +135,15 @@ namespace rupture
       load(std::istream &in);
 
     private:
-      double slip_rate_threshold = 1e-3;
-      double died_after          = 0;
-      double steady_window       = 0;
-      double steady_tolerance    = 1e-3;
-      double max_moment          = 0;
-      double max_slip            = 0;
-      double max_area            = 0;
-      double wall_clock_minutes  = 0;
+      double       slip_rate_threshold = 1e-3;
+      double       died_after          = 0;
+      double       steady_window       = 0;
+      double       steady_tolerance    = 1e-3;
+      double       max_moment          = 0;
+      double       max_slip            = 0;
+      unsigned int max_events          = 0;
+      double       max_area            = 0;
+      double       wall_clock_minutes  = 0;
 
       bool               watched       = false;
       bool               rupture_began = false;

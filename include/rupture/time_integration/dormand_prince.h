@@ -23,7 +23,9 @@ namespace rupture
      * maximum_growth and at least 0.2 times this one, between the minimum
      * and maximum step; a rejected step is repeated with the smaller step.
      * The last stage of an accepted step is the first of the next (first
-     * same as last), so a step costs six evaluations of f.
+     * same as last), so a step costs six evaluations of f. The time is a
+     * compensated sum of the steps, and the last step ends at t_end
+     * exactly.
      */
     class DormandPrince
     {
@@ -71,6 +73,14 @@ namespace rupture
       void
       load(std::istream &in);
 
+      /// The rates f(t, y) at the end of the last accepted step (the first
+      /// stage of the next).
+      const std::vector<double> &
+      last_rate() const
+      {
+        return k[0];
+      }
+
       /// Forget the stored first stage (after y was changed from outside).
       void
       forget()
@@ -85,6 +95,8 @@ namespace rupture
       std::vector<double>              stage, candidate;
       bool                             have_first_stage = false;
       unsigned long                    n_rejected       = 0;
+      /// What the compensated sum of the time still owes.
+      double compensation = 0;
     };
   } // namespace TimeIntegration
 } // namespace rupture
