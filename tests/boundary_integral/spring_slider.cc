@@ -11,7 +11,8 @@
 // from step to step, the slider's between the interpolated crossings of
 // 1 mm/s: 7e-4 apart), the whole fault (W = 400 m) ruptured and
 // the moment mu W slip, and the SEAS station file's last row at the
-// end time with the slider's slip.
+// end time with the slider's slip. With <Termination/Number of events> = 2
+// the run ends after the second event.
 
 #include <deal.II/base/mpi.h>
 
@@ -121,5 +122,20 @@ main(int argc, char **argv)
   std::printf("  station: last row at the end time with the slider's slip "
               "and slip rate: %s\n",
               at_end ? "yes" : "no");
+
+  // <Termination/Number of events> = 2: the run ends after the second
+  // event, whose row is the full run's.
+  tests::run_in("two",
+                {std::string(SOURCE_DIR) + "/inputs/spring_slider.prm"},
+                {"Termination/Number of events=2"});
+  const auto two     = tests::read_csv("two/events.csv");
+  const auto summary = tests::read_file("two/summary.json");
+  std::printf("  ended after 2 events, as the full run's rows, before the end "
+              "time: %s\n",
+              two.size() == 2 && catalogue.size() >= 2 &&
+                  two[1] == catalogue[1] &&
+                  summary.find("\"ended early\"") != std::string::npos ?
+                "yes" :
+                "no");
   return 0;
 }

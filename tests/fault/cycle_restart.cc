@@ -15,7 +15,9 @@
 // (1e-10 in the slip rate of 5e-14 m/s at the end of the locked phase,
 // 1e-11 in the last step); the solver iteration counts are not compared.
 // The event catalogue's open event is in the checkpoint too: the
-// continued run ends it with the uninterrupted run's row.
+// continued run ends it with the uninterrupted run's row. A run to 2.9e8 s
+// with <Termination/Number of events> = 1 ends after that event, with the
+// same row.
 
 #include <deal.II/base/mpi.h>
 
@@ -107,5 +109,27 @@ main(int argc, char **argv)
   std::printf("the event open at the checkpoint: one complete row, as the "
               "uninterrupted run's within 1e-9: %s\n",
               same_events && full_events[0].back() == 1 ? "yes" : "no");
+
+  // <Termination/Number of events> = 1 over a longer run: it ends after
+  // the first event, with the uninterrupted run's row.
+  tests::run_in("counted",
+                {prm},
+                {"Time integration/End time=2.9e8",
+                 "Fault/Output/Event catalogue=true",
+                 "Termination/Number of events=1"});
+  const auto counted = tests::read_csv("counted/events.csv");
+  const auto summary = tests::read_file("counted/summary.json");
+  bool       as_full = counted.size() == 1 && !full_events.empty() &&
+                 counted[0].size() == full_events[0].size();
+  for (unsigned int j = 0; as_full && j < counted[0].size(); ++j)
+    as_full = std::abs(counted[0][j] - full_events[0][j]) <=
+              1e-9 * std::abs(full_events[0][j]);
+  std::printf("ended by <Termination/Number of events> = 1 after the first "
+              "event (summary: \"number of events\"), its row as the "
+              "uninterrupted run's: %s\n",
+              as_full &&
+                  summary.find("\"number of events\"") != std::string::npos ?
+                "yes" :
+                "no");
   return 0;
 }

@@ -328,6 +328,8 @@ main(int argc, char **argv)
   check("an event catalogue with mesh refinement", refined);
   check("an event slip rate of 0",
         with_fault("Fault/Output/Event slip rate=0"));
+  check("a number of events without an event catalogue",
+        with_fault("Termination/Number of events=3"));
   // The boundary-integral method's one-element slider with one more
   // setting.
   const auto boundary_integral = [](const std::string &setting) {
