@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace slider_reference
@@ -173,6 +174,32 @@ namespace slider_reference
           on = false;
       }
     return events;
+  }
+
+  // Print the events of a run (@p label: "FE", "BI") beside the slider's:
+  // start (years) and peak slip rate.
+  inline void
+  print_events(const Events &reference, const Events &events, const char *label)
+  {
+    const double yr = 3.15576e7;
+    std::printf(
+      "  event  start (yr): ODE     %s        peak V (m/s): ODE   %s\n",
+      label,
+      label);
+    for (unsigned int i = 0;
+         i < std::max(events.start.size(), reference.start.size());
+         ++i)
+      {
+        const auto get = [i](const std::vector<double> &v, const double s) {
+          return i < v.size() ? v[i] * s : 0.;
+        };
+        std::printf("  %5u  %10.4f  %10.4f     %8.4f  %8.4f\n",
+                    i + 1,
+                    get(reference.start, 1 / yr),
+                    get(events.start, 1 / yr),
+                    get(reference.peak, 1),
+                    get(events.peak, 1));
+      }
   }
 
   // Each event's slip in a history of times t, slip rates V and slips D:

@@ -64,22 +64,7 @@ main(int argc, char **argv)
     }
   const auto events = slider_reference::find_events(bi_t, bi_V);
   const auto bi     = slider_reference::cycle(events);
-  std::printf(
-    "  event  start (yr): ODE     BI        peak V (m/s): ODE   BI\n");
-  for (unsigned int i = 0;
-       i < std::max(events.start.size(), reference.start.size());
-       ++i)
-    {
-      const auto get = [i](const std::vector<double> &v, const double s) {
-        return i < v.size() ? v[i] * s : 0.;
-      };
-      std::printf("  %5u  %10.4f  %10.4f     %8.4f  %8.4f\n",
-                  i + 1,
-                  get(reference.start, 1 / yr),
-                  get(events.start, 1 / yr),
-                  get(reference.peak, 1),
-                  get(events.peak, 1));
-    }
+  slider_reference::print_events(reference, events, "BI");
   std::printf("  same number of events (%zu): %s\n",
               reference.start.size(),
               events.start.size() == reference.start.size() ? "yes" : "no");

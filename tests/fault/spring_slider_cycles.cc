@@ -83,22 +83,7 @@ main(int argc, char **argv)
   const Events                events = find_events(fe_t, fe_V);
   const std::array<double, 2> fe     = cycle(events);
 
-  std::printf(
-    "  event  start (yr): ODE     FE        peak V (m/s): ODE   FE\n");
-  for (unsigned int i = 0;
-       i < std::max(events.start.size(), reference.start.size());
-       ++i)
-    {
-      const auto get = [i](const std::vector<double> &v, const double s) {
-        return i < v.size() ? v[i] * s : 0.;
-      };
-      std::printf("  %5u  %10.4f  %10.4f     %8.4f  %8.4f\n",
-                  i + 1,
-                  get(reference.start, 1 / yr),
-                  get(events.start, 1 / yr),
-                  get(reference.peak, 1),
-                  get(events.peak, 1));
-    }
+  slider_reference::print_events(reference, events, "FE");
   const double period_error = std::abs(fe[0] / exact[0] - 1);
   const double peak_error   = std::abs(fe[1] / exact[1] - 1);
   std::printf("  period: ODE %.4f yr, FE %.4f yr\n", exact[0] / yr, fe[0] / yr);
