@@ -39,6 +39,52 @@ def cycle(starts, peaks, skip=1):
     return period, sum(peaks[skip:]) / n
 
 
+def read_catalogue(path):
+    """The complete events of an events.csv (the event catalogue of
+    rupture's runs): (start years, peak slip rates, largest slips)."""
+    import csv
+    starts, peaks, slips = [], [], []
+    with open(path) as f:
+        rows = [r for r in csv.reader(line for line in f
+                                      if not line.startswith("#"))]
+    if not rows:
+        return starts, peaks, slips
+    col = {name: i for i, name in enumerate(rows[0])}
+    for r in rows[1:]:
+        if r[col["complete"]] != "1":
+            continue
+        starts.append(float(r[col["start (years)"]]))
+        peaks.append(float(r[col["peak slip rate (m/s)"]]))
+        slips.append(float(r[col["largest slip (m)"]]))
+    return starts, peaks, slips
+
+
+def merge_events(starts, peaks, slips, gap=1.0):
+    """The events with those that start within @p gap years of the start
+    of the event before counted with it: at coarse resolution the largest
+    slip rate can dip below 1 mm/s for a moment while an event dies out
+    and rise again (a second front), which the catalogue lists as an event
+    of its own."""
+    kept = ([], [], [])
+    for s, p, d in zip(starts, peaks, slips):
+        if kept[0] and s - kept[0][-1] < gap:
+            kept[1][-1] = max(kept[1][-1], p)
+            kept[2][-1] = max(kept[2][-1], d)
+            continue
+        for column, value in zip(kept, (s, p, d)):
+            column.append(value)
+    return kept
+
+
+def recurrence(starts, skip=2):
+    """The mean interval between the events after the first @p skip (the
+    SEAS benchmarks' recurrence interval); None with fewer than skip + 2."""
+    if len(starts) < skip + 2:
+        return None
+    later = starts[skip:]
+    return (later[-1] - later[0]) / (len(later) - 1)
+
+
 class Slider:
     """tau0 + k (V_p t - delta) = sigma F(V, theta) + eta V with
     F = a asinh(V / (2 V0) exp((f0 + b ln(V0 theta / L)) / a)) and
