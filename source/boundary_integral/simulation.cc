@@ -528,6 +528,8 @@ namespace rupture
           json << std::setprecision(12) << "{\n"
                << "  \"status\": \""
                << (t >= end_time ? "finished" : "ended early") << "\",\n"
+               << "  \"end\": \""
+               << (t >= end_time ? "end time" : "number of events") << "\",\n"
                << "  \"method\": \"boundary integral\",\n"
                << "  \"ranks\": "
                << dealii::Utilities::MPI::n_mpi_processes(communicator) << ",\n"
