@@ -31,7 +31,7 @@ namespace rupture
 
 
     CycleOutput::CycleOutput(
-      const AntiplaneHalfSpace                            &geometry,
+      const Stiffness                                     &geometry,
       const std::vector<std::pair<std::string, Point<2>>> &points,
       const Sampling                                      &sampling,
       const bool                                           test_mode,
@@ -47,7 +47,7 @@ namespace rupture
         {
           const auto &[name, point] = points[k];
           AssertThrow(std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
-                        -point[1] <= n * geometry.element_length(),
+                        -point[1] <= geometry.extent(),
                       dealii::ExcMessage(
                         "The station <" + name +
                         "> of <Fault/Output/Stations> is not on the fault: "
@@ -57,10 +57,20 @@ namespace rupture
           Station &s = stations[k];
           s.name     = name;
           s.depth    = -point[1];
-          const double position =
-            std::clamp(s.depth / geometry.element_length() - 0.5, 0., n - 1.);
-          s.element = n > 1 ? std::min<unsigned int>(position, n - 2) : 0;
-          s.weight  = n > 1 ? position - s.element : 0.;
+          // Between the element above the station and the one below
+          // (the first or the last element's value above or below them).
+          s.element = 0;
+          s.weight  = 0;
+          if (n > 1)
+            {
+              while (s.element + 2 < n &&
+                     geometry.depth(s.element + 1) <= s.depth)
+                ++s.element;
+              const double above = geometry.depth(s.element),
+                           below = geometry.depth(s.element + 1);
+              s.weight =
+                std::clamp((s.depth - above) / (below - above), 0., 1.);
+            }
         }
     }
 
@@ -140,7 +150,7 @@ namespace rupture
                           "row t (s), the log10 of the largest slip rate "
                           "(m/s), and the slip (m) at those depths.\n0 0";
               for (unsigned int i = 0; i < geometry.size(); ++i)
-                profiles << " " << geometry.centre(i);
+                profiles << " " << geometry.depth(i);
               profiles << "\n";
             }
         }

@@ -18,7 +18,7 @@ namespace rupture
   namespace BoundaryIntegral
   {
     QuasiDynamicFault::QuasiDynamicFault(
-      const AntiplaneHalfSpace  &geometry,
+      const Stiffness           &geometry,
       const Friction::Interface &law,
       const std::vector<double> &normal_stress,
       const std::vector<double> &initial_shear,
@@ -46,7 +46,7 @@ namespace rupture
                   ExcInternalError());
       for (unsigned int i = 0; i < n; ++i)
         {
-          points.emplace_back(0., -geometry.centre(i), 0.);
+          points.emplace_back(0., -geometry.depth(i), 0.);
           // The law holds at the start: S(V_ini, state) = tau0 - eta V_ini.
           const double friction =
             sigma[i] > 0 ?
@@ -362,7 +362,7 @@ namespace rupture
     {
       const auto fastest   = std::max_element(velocity.begin(), velocity.end());
       const unsigned int i = fastest - velocity.begin();
-      return {*fastest, Point<2>(0., -geometry.centre(i))};
+      return {*fastest, Point<2>(0., -geometry.depth(i))};
     }
 
 
@@ -389,11 +389,11 @@ namespace rupture
     QuasiDynamicFault::event_summary(const double threshold) const
     {
       Fault::EventSummary<2> s;
-      const double           h = geometry.element_length();
       for (unsigned int i = 0; i < n; ++i)
         {
           const double slip = std::abs(current[i] - event_start[i]);
           s.peak_rate       = std::max(s.peak_rate, event_peak[i]);
+          const double h    = geometry.length(i);
           s.moment += geometry.shear_modulus() * h * slip;
           if (event_peak[i] >= threshold)
             {

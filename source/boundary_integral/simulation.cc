@@ -4,6 +4,7 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/interruption.h>
 #include <rupture/base/utilities.h>
+#include <rupture/boundary_integral/antiplane_half_space.h>
 #include <rupture/boundary_integral/cycle_output.h>
 #include <rupture/boundary_integral/quasi_dynamic_fault.h>
 #include <rupture/boundary_integral/simulation.h>

@@ -1,6 +1,8 @@
 #ifndef rupture_boundary_integral_antiplane_half_space_h
 #define rupture_boundary_integral_antiplane_half_space_h
 
+#include <rupture/boundary_integral/stiffness.h>
+
 #include <vector>
 
 namespace rupture
@@ -40,7 +42,7 @@ namespace rupture
      * infinity) makes no stress, as it must. The self term is
      * K_ii = -2 mu / (pi h) plus the image: slip relieves the stress.
      */
-    class AntiplaneHalfSpace
+    class AntiplaneHalfSpace : public Stiffness
     {
     public:
       /**
@@ -54,7 +56,7 @@ namespace rupture
 
       /// The number of elements N.
       unsigned int
-      size() const
+      size() const override
       {
         return n;
       }
@@ -73,9 +75,28 @@ namespace rupture
         return (i + 0.5) * h;
       }
 
+      /// The centre of element @p i.
+      double
+      depth(const unsigned int i) const override
+      {
+        return centre(i);
+      }
+
+      double
+      length(const unsigned int) const override
+      {
+        return h;
+      }
+
+      double
+      extent() const override
+      {
+        return n * h;
+      }
+
       /// The shear modulus (Pa).
       double
-      shear_modulus() const
+      shear_modulus() const override
       {
         return mu;
       }
@@ -87,7 +108,7 @@ namespace rupture
 
       /// Rows @p begin to @p end (excluded) of K, one after the other.
       std::vector<double>
-      rows(const unsigned int begin, const unsigned int end) const;
+      rows(const unsigned int begin, const unsigned int end) const override;
 
     private:
       unsigned int n;

@@ -54,7 +54,7 @@ namespace rupture
        * Check the stations (named points (0, -depth) on the fault of
        * @p geometry; the message names <Fault/Output/Stations>).
        */
-      CycleOutput(const AntiplaneHalfSpace                            &geometry,
+      CycleOutput(const Stiffness                                     &geometry,
                   const std::vector<std::pair<std::string, Point<2>>> &stations,
                   const Sampling                                      &sampling,
                   const bool     test_mode,
@@ -106,13 +106,13 @@ namespace rupture
                 const bool          continuing,
                 const std::uint64_t length);
 
-      const AntiplaneHalfSpace &geometry;
-      const Sampling            sampling;
-      const bool                test_mode;
-      const bool                root;
-      std::vector<Station>      stations;
-      std::ofstream             statistics, profiles;
-      std::string               statistics_path, profiles_path;
+      const Stiffness     &geometry;
+      const Sampling       sampling;
+      const bool           test_mode;
+      const bool           root;
+      std::vector<Station> stations;
+      std::ofstream        statistics, profiles;
+      std::string          statistics_path, profiles_path;
       // The sampling state.
       double last_row_rate = -1, last_row_time = 0, last_profile = -1e300;
       long   rows_step = -1, profile_step = -1;

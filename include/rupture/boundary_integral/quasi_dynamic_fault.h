@@ -1,7 +1,7 @@
 #ifndef rupture_boundary_integral_quasi_dynamic_fault_h
 #define rupture_boundary_integral_quasi_dynamic_fault_h
 
-#include <rupture/boundary_integral/antiplane_half_space.h>
+#include <rupture/boundary_integral/stiffness.h>
 #include <rupture/fault/event_source.h>
 #include <rupture/friction/interface.h>
 
@@ -24,8 +24,8 @@ namespace rupture
      * (the quasi-dynamic approximation of inertia),
      *   tau_i - eta V_i = S_i(V_i, state_i),
      *   tau_i = tau0_i + sum_j K_ij (s_j - V_p t)
-     * (AntiplaneHalfSpace), S the law's strength at the rate with the
-     * state held (Friction::Interface::strength_at_rate). The law sees the
+     * (a Stiffness: AntiplaneHalfSpace), S the law's strength at the rate with
+     * the state held (Friction::Interface::strength_at_rate). The law sees the
      * element's centre as the point (0, -depth, 0): its functions of
      * position are written in the depth -y.
      *
@@ -49,7 +49,7 @@ namespace rupture
        * @p initial_rate (m/s) per element; radiation damping
        * @p damping (Pa s/m) and the plate rate @p plate_rate (m/s).
        */
-      QuasiDynamicFault(const AntiplaneHalfSpace  &geometry,
+      QuasiDynamicFault(const Stiffness           &geometry,
                         const Friction::Interface &law,
                         const std::vector<double> &normal_stress,
                         const std::vector<double> &initial_shear,
@@ -98,7 +98,7 @@ namespace rupture
       double
       depth(const unsigned int i) const
       {
-        return geometry.centre(i);
+        return geometry.depth(i);
       }
       double
       slip(const unsigned int i) const
@@ -163,7 +163,7 @@ namespace rupture
                    const std::vector<double> &y,
                    Friction::State           &state) const;
 
-      const AntiplaneHalfSpace  &geometry;
+      const Stiffness           &geometry;
       const Friction::Interface &law;
       const MPI_Comm             communicator;
       const unsigned int         n;
