@@ -22,7 +22,6 @@ namespace rupture
       const Friction::Interface &law,
       const std::vector<double> &normal_stress,
       const std::vector<double> &initial_shear,
-      const std::vector<double> &initial_rate,
       const double               damping,
       const double               plate_rate,
       const MPI_Comm             communicator)
@@ -36,22 +35,19 @@ namespace rupture
       , plate_rate(plate_rate)
       , states(n)
       , current(n, 0.)
-      , velocity(initial_rate)
+      , velocity(n, plate_rate)
       , traction(initial_shear)
       , event_start(n, 0.)
       , event_peak(n, 0.)
     {
-      AssertThrow(sigma.size() == n && tau0.size() == n &&
-                    initial_rate.size() == n,
-                  ExcInternalError());
+      AssertThrow(sigma.size() == n && tau0.size() == n, ExcInternalError());
       for (unsigned int i = 0; i < n; ++i)
         {
           points.emplace_back(0., -geometry.depth(i), 0.);
-          // The law holds at the start: S(V_ini, state) = tau0 - eta V_ini.
+          // The law holds at the start: S(V_p, state) = tau0 - eta V_p.
           const double friction =
-            sigma[i] > 0 ?
-              (std::abs(tau0[i]) - eta * initial_rate[i]) / sigma[i] :
-              std::numeric_limits<double>::quiet_NaN();
+            sigma[i] > 0 ? (std::abs(tau0[i]) - eta * plate_rate) / sigma[i] :
+                           std::numeric_limits<double>::quiet_NaN();
           law.initialize_state(points[i], friction, states[i]);
         }
       n_variables = states.empty() ? 0 : states[0].variables.size();
@@ -185,11 +181,11 @@ namespace rupture
                              std::vector<double>       &rate)
     {
       rate.resize(y.size());
-      std::vector<double> relative(n);
+      relative.resize(n);
       for (unsigned int j = 0; j < n; ++j)
         relative[j] = y[j] - plate_rate * t;
-      const unsigned int  owned = row_end - row_begin;
-      std::vector<double> local((1 + n_variables) * std::size_t(owned) + owned);
+      const unsigned int owned = row_end - row_begin;
+      local.resize((1 + n_variables) * std::size_t(owned));
       Friction::State     state;
       std::vector<double> state_rates;
       for (unsigned int r = 0; r < owned; ++r)
@@ -216,8 +212,8 @@ namespace rupture
             local[(1 + v) * std::size_t(owned) + r] =
               logarithmic[v] ? state_rates[v] / state.variables[v] :
                                state_rates[v];
-          local[(1 + n_variables) * std::size_t(owned) + r] =
-            tau - eta * local[r];
+          // (The owned rows' traction, for accept().)
+          traction[i] = tau - eta * local[r];
         }
       // Every rank gets every rate (block by block).
       for (unsigned int b = 0; b < 1 + n_variables; ++b)
@@ -232,10 +228,6 @@ namespace rupture
                                           communicator);
           AssertThrowMPI(ierr);
         }
-      // (The traction of the owned rows, for evaluate().)
-      std::copy(local.begin() + (1 + n_variables) * std::size_t(owned),
-                local.end(),
-                traction.begin() + row_begin);
     }
 
 
@@ -288,35 +280,10 @@ namespace rupture
 
 
 
-    std::vector<double>
-    QuasiDynamicFault::state_output(const unsigned int i) const
-    {
-      Friction::State s = states[i];
-      for (unsigned int v = 0; v < n_variables; ++v)
-        s.variables[v] = variables[v][i];
-      return law.state_output(s);
-    }
-
-
-
     double
     QuasiDynamicFault::max_slip_rate() const
     {
       return n > 0 ? *std::max_element(velocity.begin(), velocity.end()) : 0.;
-    }
-
-
-
-    double
-    QuasiDynamicFault::state_evolution_time() const
-    {
-      double shortest = std::numeric_limits<double>::infinity();
-      for (unsigned int i = 0; i < n; ++i)
-        if (velocity[i] > 0)
-          shortest =
-            std::min(shortest,
-                     law.slip_scale(points[i], states[i]) / velocity[i]);
-      return shortest;
     }
 
 

@@ -251,14 +251,8 @@ namespace rupture
       prm.leave_subsection();
       const bool checkpoints = checkpoint_steps > 0 || checkpoint_minutes > 0;
 
-      QuasiDynamicFault                        fault(geometry,
-                              *law,
-                              sigma,
-                              tau0,
-                              std::vector<double>(geometry.size(), plate_rate),
-                              eta,
-                              plate_rate,
-                              communicator);
+      QuasiDynamicFault fault(
+        geometry, *law, sigma, tau0, eta, plate_rate, communicator);
       CycleOutput                              output(geometry,
                          station_points,
                          {sampling_change,
@@ -347,12 +341,6 @@ namespace rupture
         }
       else
         fault.evaluate(0, y);
-      double initial_slowest = 1e300, initial_fastest = 0;
-      for (unsigned int i = 0; i < geometry.size(); ++i)
-        {
-          initial_slowest = std::min(initial_slowest, fault.slip_rate(i));
-          initial_fastest = std::max(initial_fastest, fault.slip_rate(i));
-        }
 
       // Every input is checked: the output directory.
       Output::Directory::check_name(directory_name, "Output directory");
@@ -384,8 +372,16 @@ namespace rupture
             std::cout << "  continued from the checkpoint at t = " << t
                       << " s (step " << steps << ")\n";
           else
-            std::cout << "  initial slip rates from " << initial_slowest
-                      << " to " << initial_fastest << " m/s\n";
+            {
+              double slowest = 1e300, fastest = 0;
+              for (unsigned int i = 0; i < geometry.size(); ++i)
+                {
+                  slowest = std::min(slowest, fault.slip_rate(i));
+                  fastest = std::max(fastest, fault.slip_rate(i));
+                }
+              std::cout << "  initial slip rates from " << slowest << " to "
+                        << fastest << " m/s\n";
+            }
           std::cout << std::flush;
         }
       if (!resume)

@@ -60,7 +60,6 @@ namespace rupture
       for (auto &stage_rate : k)
         stage_rate.resize(n);
       stage.resize(n);
-      candidate.resize(n);
       if (!have_first_stage)
         {
           rhs(t, y, k[0]);

@@ -44,16 +44,16 @@ namespace rupture
     public:
       /**
        * The fault of @p geometry with the friction law @p law at the
-       * normal stress @p normal_stress (Pa, compressive > 0), the initial
-       * shear traction @p initial_shear (Pa) and the initial slip rate
-       * @p initial_rate (m/s) per element; radiation damping
-       * @p damping (Pa s/m) and the plate rate @p plate_rate (m/s).
+       * normal stress @p normal_stress (Pa, compressive > 0) and the initial
+       * shear traction @p initial_shear (Pa) per element; radiation damping
+       * @p damping (Pa s/m) and the plate rate @p plate_rate (m/s), at
+       * which the law's initial state is found from tau0 - eta V_p (laws
+       * whose initial state follows from the traction).
        */
       QuasiDynamicFault(const Stiffness           &geometry,
                         const Friction::Interface &law,
                         const std::vector<double> &normal_stress,
                         const std::vector<double> &initial_shear,
-                        const std::vector<double> &initial_rate,
                         const double               damping,
                         const double               plate_rate,
                         const MPI_Comm             communicator);
@@ -96,11 +96,6 @@ namespace rupture
         return n;
       }
       double
-      depth(const unsigned int i) const
-      {
-        return geometry.depth(i);
-      }
-      double
       slip(const unsigned int i) const
       {
         return current[i];
@@ -119,14 +114,8 @@ namespace rupture
       /// The law's first state variable (as the law defines it).
       double
       state(const unsigned int i) const;
-      /// The law's state outputs of element @p i (e.g. log10 theta).
-      std::vector<double>
-      state_output(const unsigned int i) const;
       double
       max_slip_rate() const;
-      /// min over the elements of the law's slip scale over V (s).
-      double
-      state_evolution_time() const;
 
       /// Write what evaluate() computed, the first guesses of the slip-rate
       /// solves and the open event (a checkpoint), and read it back.
@@ -174,6 +163,9 @@ namespace rupture
       const double               eta, plate_rate;
       /// The law's state of every element at the start (its parameters).
       std::vector<Friction::State> states;
+      /// Scratch of rates(): the slips relative to the plate's, and this
+      /// rank's rates.
+      std::vector<double> relative, local;
       /// This rank's rows of K, and their range.
       unsigned int        row_begin = 0, row_end = 0;
       std::vector<double> stiffness;

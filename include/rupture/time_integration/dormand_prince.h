@@ -81,18 +81,11 @@ namespace rupture
         return k[0];
       }
 
-      /// Forget the stored first stage (after y was changed from outside).
-      void
-      forget()
-      {
-        have_first_stage = false;
-      }
-
     private:
       Rhs                              rhs;
       Settings                         settings;
       std::vector<std::vector<double>> k;
-      std::vector<double>              stage, candidate;
+      std::vector<double>              stage;
       bool                             have_first_stage = false;
       unsigned long                    n_rejected       = 0;
       /// What the compensated sum of the time still owes.
