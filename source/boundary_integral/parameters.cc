@@ -1,6 +1,15 @@
 // The boundary-integral method's parameters.
 
+#include <rupture/base/utilities.h>
+#include <rupture/boundary_integral/settings.h>
 #include <rupture/boundary_integral/simulation.h>
+#include <rupture/boundary_integral/stiffness.h>
+
+#include <deal.II/base/function_parser.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace rupture
 {
@@ -113,6 +122,202 @@ namespace rupture
     chosen(ParameterHandler &prm)
     {
       return prm.get("Method") == "boundary integral";
+    }
+
+
+
+    namespace
+    {
+      constexpr double year = 3.15576e7;
+
+      std::string
+      number(const double x)
+      {
+        std::ostringstream s;
+        s << std::setprecision(10) << x;
+        return s.str();
+      }
+
+      /// The first number of the list in <Material/@p entry>.
+      double
+      first_material_value(ParameterHandler &prm, const std::string &entry)
+      {
+        const auto values =
+          Utilities::parse_doubles(prm.get(entry), "Material/" + entry);
+        AssertThrow(!values.empty(),
+                    ExcMessage("<Material/" + entry + "> is empty."));
+        return values[0];
+      }
+
+      /// The values at the depths of @p body's elements of the function of
+      /// x, y, z @p expression in <Boundary integral/@p entry>.
+      std::vector<double>
+      values_along(const Stiffness   &body,
+                   const std::string &expression,
+                   const std::string &entry)
+      {
+        AssertThrow(!dealii::Utilities::trim(expression).empty(),
+                    ExcMessage("<Boundary integral/" + entry +
+                               "> is empty. Give a function of x, y, z (y "
+                               "up, the fault at x = 0, the depth -y), e.g. "
+                               "a number."));
+        FunctionParser<3> f(1);
+        try
+          {
+            f.initialize("x,y,z",
+                         expression,
+                         {{"pi", M_PI}, {"year", year}},
+                         false);
+          }
+        catch (const ExceptionBase &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("<Boundary integral/" + entry + "> = <" +
+                                   expression +
+                                   "> is not a function of x, y, z: " +
+                                   Utilities::message_of(e)));
+          }
+        std::vector<double> v;
+        for (unsigned int i = 0; i < body.size(); ++i)
+          {
+            const double value = f.value(Point<3>(0., -body.depth(i), 0.));
+            AssertThrow(std::isfinite(value),
+                        ExcMessage("<Boundary integral/" + entry +
+                                   "> is not finite at the depth " +
+                                   std::to_string(body.depth(i)) + " m."));
+            v.push_back(value);
+          }
+        return v;
+      }
+    } // namespace
+
+
+
+    Settings::Settings(ParameterHandler &prm)
+    {
+      test_mode        = prm.get_bool("Test mode");
+      output_directory = prm.get("Output directory");
+
+      // The medium.
+      prm.enter_subsection("Material");
+      if (prm.get("Parametrization") == "wave speeds")
+        shear_modulus = first_material_value(prm, "Density") *
+                        std::pow(first_material_value(prm, "S-wave speed"), 2);
+      else
+        shear_modulus =
+          first_material_value(prm, "Young's modulus") /
+          (2 * (1 + first_material_value(prm, "Poisson's ratio")));
+      prm.leave_subsection();
+
+      // The friction law, the damping and the fault's outputs.
+      prm.enter_subsection("Fault");
+      law               = Friction::create(prm);
+      law_name          = prm.get("Friction law");
+      radiation_damping = prm.get_double("Radiation damping");
+      AssertThrow(law->has_state_rate(),
+                  ExcMessage("<Fault/Friction law> = " + law_name +
+                             " gives no rate of change of its state, which "
+                             "the boundary-integral method integrates. "
+                             "Allowed with <Method> = boundary integral: "
+                             "rate and state."));
+      prm.enter_subsection("Output");
+      events.parse_parameters(prm);
+      sampling.event_rate = prm.get_double("Event slip rate");
+      stations = Utilities::parse_named_points<2>(prm.get("Stations"),
+                                                  "Fault/Output/Stations");
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      // The clock.
+      prm.enter_subsection("Time integration");
+      end_time   = prm.get_double("End time");
+      first_step = prm.get_double("Time step");
+      AssertThrow(end_time > 0 && std::isfinite(end_time),
+                  ExcMessage("<Time integration/End time> must be > 0 (s)."));
+      AssertThrow(first_step > 0 && std::isfinite(first_step),
+                  ExcMessage("<Time integration/Time step> (the first step "
+                             "the boundary-integral method tries) must be "
+                             "> 0 (s)."));
+      prm.enter_subsection("Step controller");
+      integrator.minimum_step   = prm.get_double("Minimum time step");
+      integrator.maximum_step   = prm.get_double("Maximum time step");
+      integrator.maximum_growth = prm.get_double("Maximum growth factor");
+      prm.leave_subsection();
+      prm.leave_subsection();
+
+      // The fault.
+      prm.enter_subsection("Boundary integral");
+      fault_depth  = prm.get_double("Fault depth");
+      element_size = prm.get_double("Element size");
+      plate_rate   = prm.get_double("Plate rate");
+      AssertThrow(std::isfinite(plate_rate) && plate_rate > 0,
+                  ExcMessage("<Boundary integral/Plate rate> must be > 0 "
+                             "(m/s)."));
+      normal_stress                 = prm.get("Normal stress");
+      initial_shear_stress          = prm.get("Initial shear stress");
+      integrator.relative_tolerance = prm.get_double("Relative tolerance");
+      absolute_tolerance            = prm.get_double("Absolute tolerance");
+      AssertThrow(integrator.relative_tolerance > 0 &&
+                    integrator.relative_tolerance < 1 && absolute_tolerance > 0,
+                  ExcMessage("<Boundary integral/Relative tolerance> must lie "
+                             "in (0, 1) and <Absolute tolerance> be > 0."));
+      sampling.rate_change     = prm.get_double("Sampling slip rate change");
+      sampling.interval        = prm.get_double("Sampling interval");
+      sampling.profile_between = prm.get_double("Profile interval between "
+                                                "events");
+      sampling.profile_during  = prm.get_double("Profile interval during "
+                                                "events");
+      prm.leave_subsection();
+      AssertThrow(integrator.minimum_step > 0 &&
+                    integrator.maximum_step >= integrator.minimum_step &&
+                    integrator.maximum_growth > 1,
+                  ExcMessage("<Time integration/Step controller>: the "
+                             "minimum time step must be > 0, the maximum at "
+                             "least the minimum, the growth factor > 1."));
+
+      // The end: <Termination/Number of events> (the one criterion of
+      // <Termination> that a cycle run of this method uses).
+      prm.enter_subsection("Termination");
+      max_events = prm.get_integer("Number of events");
+      prm.leave_subsection();
+      AssertThrow(max_events == 0 || events.enabled(),
+                  ExcMessage("<Termination/Number of events> counts the "
+                             "events of the event catalogue: set "
+                             "<Fault/Output/Event catalogue> = true."));
+
+      // Checkpoints.
+      prm.enter_subsection("Checkpoint");
+      checkpoint_steps   = prm.get_integer("Interval");
+      checkpoint_minutes = prm.get_double("Wall-clock interval");
+      prm.leave_subsection();
+    }
+
+
+
+    void
+    Settings::fault_stresses(const Stiffness     &body,
+                             std::vector<double> &sigma,
+                             std::vector<double> &tau0) const
+    {
+      sigma = values_along(body, normal_stress, "Normal stress");
+      tau0  = values_along(body, initial_shear_stress, "Initial shear stress");
+      const double eta = radiation_damping;
+      for (unsigned int i = 0; i < body.size(); ++i)
+        {
+          AssertThrow(sigma[i] > 0,
+                      ExcMessage("<Boundary integral/Normal stress> is " +
+                                 number(sigma[i]) + " Pa at the depth " +
+                                 number(body.depth(i)) +
+                                 " m, but it must be > 0 (compression)."));
+          AssertThrow(tau0[i] - eta * plate_rate > 0,
+                      ExcMessage("<Boundary integral/Initial shear stress> "
+                                 "is " +
+                                 number(tau0[i]) + " Pa at the depth " +
+                                 number(body.depth(i)) +
+                                 " m, but it must exceed eta V_p = " +
+                                 number(eta * plate_rate) +
+                                 " Pa, so that the fault slips at V_p."));
+        }
     }
   } // namespace BoundaryIntegral
 } // namespace rupture

@@ -1,0 +1,81 @@
+#ifndef rupture_boundary_integral_settings_h
+#define rupture_boundary_integral_settings_h
+
+#include <rupture/boundary_integral/cycle_output.h>
+#include <rupture/fault/event_catalogue.h>
+#include <rupture/friction/interface.h>
+#include <rupture/time_integration/dormand_prince.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rupture
+{
+  namespace BoundaryIntegral
+  {
+    using namespace dealii;
+
+    class Stiffness;
+
+    /**
+     * Everything a boundary-integral cycle run reads from the parameters,
+     * checked (each message names its entry): the medium of <Material>,
+     * the friction law, the radiation damping, the stations and the event
+     * catalogue of <Fault>, the clock of <Time integration>, <Boundary
+     * integral>, <Termination/Number of events> and <Checkpoint>.
+     */
+    struct Settings
+    {
+      /// Read and check them. Collective only in that every rank reads.
+      explicit Settings(ParameterHandler &prm);
+
+      /// The fault's normal stress and initial shear stress at the depths
+      /// of @p body's elements (checked: compression, above eta V_p).
+      void
+      fault_stresses(const Stiffness     &body,
+                     std::vector<double> &normal_stress,
+                     std::vector<double> &initial_shear_stress) const;
+
+      bool        test_mode = false;
+      std::string output_directory;
+
+      // The medium and the fault.
+      double                                        shear_modulus     = 0;
+      double                                        radiation_damping = 0;
+      double                                        plate_rate        = 0;
+      std::unique_ptr<Friction::Interface>          law;
+      std::string                                   law_name;
+      Fault::EventCatalogue<2>                      events;
+      std::vector<std::pair<std::string, Point<2>>> stations;
+
+      // <Boundary integral>.
+      double                fault_depth = 0, element_size = 0;
+      std::string           normal_stress, initial_shear_stress;
+      double                absolute_tolerance = 0;
+      CycleOutput::Sampling sampling;
+
+      // The clock and the end.
+      double                                   end_time   = 0;
+      double                                   first_step = 0;
+      TimeIntegration::DormandPrince::Settings integrator;
+      unsigned int                             max_events = 0;
+
+      // Checkpoints.
+      unsigned int checkpoint_steps   = 0;
+      double       checkpoint_minutes = 0;
+
+      bool
+      checkpoints() const
+      {
+        return checkpoint_steps > 0 || checkpoint_minutes > 0;
+      }
+    };
+  } // namespace BoundaryIntegral
+} // namespace rupture
+
+#endif
