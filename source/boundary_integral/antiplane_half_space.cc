@@ -6,6 +6,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -73,6 +74,17 @@ namespace rupture
         for (unsigned int j = 0; j < n; ++j)
           k.push_back(stiffness(i, j));
       return k;
+    }
+
+
+
+    std::string
+    AntiplaneHalfSpace::description() const
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << "antiplane half-space, " << n
+        << " elements of " << h << " m down to " << n * h / 1e3 << " km";
+      return s.str();
     }
   } // namespace BoundaryIntegral
 } // namespace rupture

@@ -24,9 +24,10 @@ namespace rupture
         Patterns::Selection("finite elements|boundary integral"),
         "How the problem is discretized. 'finite elements': the body "
         "meshed in <Scene>, the fault as a contact interface (everything "
-        "but <Boundary integral>). 'boundary integral': the review paper's "
-        "dual method, the fault alone with the Green's function of the "
-        "body (<Boundary integral>): quasi-dynamic earthquake cycles on the "
+        "but <Boundary integral>). 'boundary integral': the fault alone, "
+        "with the body's stiffness from its Green's function (the review "
+        "paper's dual method) or from finite elements (<Boundary "
+        "integral/Stiffness>): quasi-dynamic earthquake cycles on the "
         "antiplane half-space (SCEC SEAS BP1).");
       prm.enter_subsection("Boundary integral");
       {
@@ -38,6 +39,37 @@ namespace rupture
           "'antiplane half-space', a vertical strike-slip fault at x = 0 "
           "from the free surface y = 0 down, out-of-plane displacement only "
           "(the review paper's section 8, SEAS BP1).");
+        prm.declare_entry(
+          "Stiffness",
+          "Green's function",
+          Patterns::Selection("Green's function|finite elements"),
+          "How the body turns the fault's slip into traction. 'Green's "
+          "function': in closed form (the dual method, uniform slip on "
+          "elements of <Element size>, traction at their centres). 'finite "
+          "elements': the body meshed (FE_Q of <Finite-element degree> on a "
+          "box of <Domain size>, cells growing by <Cell growth factor> away "
+          "from the fault), the fault's nodes the elements (<Element size> "
+          "their spacing), one solve per node before the first step.");
+        prm.declare_entry("Finite-element degree",
+                          "2",
+                          Patterns::Integer(),
+                          "With <Stiffness> = finite elements: the "
+                          "polynomial degree (1 to 4) of the elements; the "
+                          "cells at the fault are degree times <Element "
+                          "size> long.");
+        prm.declare_entry("Domain size",
+                          "400e3",
+                          Patterns::Double(),
+                          "With <Stiffness> = finite elements: the width and "
+                          "depth (m, at least twice <Fault depth>) of the "
+                          "meshed box beside the fault, whose far sides "
+                          "move with the plates.");
+        prm.declare_entry("Cell growth factor",
+                          "1.1",
+                          Patterns::Double(),
+                          "With <Stiffness> = finite elements: the ratio (> 1, "
+                          "at most 2) of the sizes of neighbouring cells away "
+                          "from the fault.");
         prm.declare_entry("Fault depth",
                           "40e3",
                           Patterns::Double(),
@@ -247,6 +279,10 @@ namespace rupture
 
       // The fault.
       prm.enter_subsection("Boundary integral");
+      stiffness    = prm.get("Stiffness");
+      fe_degree    = prm.get_integer("Finite-element degree");
+      domain_size  = prm.get_double("Domain size");
+      cell_growth  = prm.get_double("Cell growth factor");
       fault_depth  = prm.get_double("Fault depth");
       element_size = prm.get_double("Element size");
       plate_rate   = prm.get_double("Plate rate");

@@ -4,6 +4,7 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/interruption.h>
 #include <rupture/base/on_root.h>
+#include <rupture/boundary_integral/antiplane_finite_elements.h>
 #include <rupture/boundary_integral/antiplane_half_space.h>
 #include <rupture/boundary_integral/checkpoint.h>
 #include <rupture/boundary_integral/cycle_output.h>
@@ -19,6 +20,7 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace rupture
@@ -67,6 +69,31 @@ namespace rupture
              << "}\n";
         return json.str();
       }
+
+      /// The body of <Boundary integral/Stiffness>.
+      std::unique_ptr<Stiffness>
+      make_body(const Settings &settings, const MPI_Comm communicator)
+      {
+        if (settings.stiffness == "finite elements")
+          {
+            AntiplaneFiniteElements::Settings fe;
+            fe.fault_depth  = settings.fault_depth;
+            fe.node_spacing = settings.element_size;
+            AssertThrow(settings.fe_degree >= 1 && settings.fe_degree <= 4,
+                        ExcMessage("<Boundary integral/Finite-element degree> "
+                                   "is " +
+                                   std::to_string(settings.fe_degree) +
+                                   ", but it must be 1, 2, 3 or 4."));
+            fe.degree        = settings.fe_degree;
+            fe.domain_size   = settings.domain_size;
+            fe.growth        = settings.cell_growth;
+            fe.shear_modulus = settings.shear_modulus;
+            return std::make_unique<AntiplaneFiniteElements>(fe, communicator);
+          }
+        return std::make_unique<AntiplaneHalfSpace>(settings.fault_depth,
+                                                    settings.element_size,
+                                                    settings.shear_modulus);
+      }
     } // namespace
 
 
@@ -78,11 +105,10 @@ namespace rupture
         dealii::Utilities::MPI::this_mpi_process(communicator) == 0;
       const auto wall_start = std::chrono::steady_clock::now();
 
-      Settings                 settings(prm);
-      const AntiplaneHalfSpace geometry(settings.fault_depth,
-                                        settings.element_size,
-                                        settings.shear_modulus);
-      std::vector<double>      sigma, tau0;
+      Settings                         settings(prm);
+      const std::unique_ptr<Stiffness> body = make_body(settings, communicator);
+      const Stiffness                 &geometry = *body;
+      std::vector<double>              sigma, tau0;
       settings.fault_stresses(geometry, sigma, tau0);
       const double eta    = settings.radiation_damping;
       auto        &events = settings.events;
@@ -147,12 +173,13 @@ namespace rupture
       if (root)
         {
           std::cout << std::setprecision(6)
-                    << "Boundary-integral method (the review paper's dual "
-                       "method): antiplane half-space, "
-                    << geometry.size() << " elements of "
-                    << geometry.element_length() << " m down to "
-                    << geometry.size() * geometry.element_length() / 1e3
-                    << " km, mu = " << settings.shear_modulus
+                    << (settings.stiffness == "finite elements" ?
+                          "Boundary-integral method (the fault alone), the "
+                          "body's stiffness from " :
+                          "Boundary-integral method (the review paper's dual "
+                          "method): ")
+                    << geometry.description()
+                    << ", mu = " << settings.shear_modulus
                     << " Pa, eta = " << eta
                     << " Pa s/m, V_p = " << settings.plate_rate << " m/s; "
                     << dealii::Utilities::MPI::n_mpi_processes(communicator)

@@ -351,6 +351,24 @@ main(int argc, char **argv)
         boundary_integral("Boundary integral/Initial shear stress="));
   check("the boundary-integral method with a tensile normal stress",
         boundary_integral("Boundary integral/Normal stress=-1e6"));
+  const auto finite_elements = [&](const std::string &setting) {
+    // (Degree 1: the slider's one element is its one node.)
+    auto arguments = boundary_integral("Boundary integral/Stiffness=finite "
+                                       "elements");
+    arguments.insert(
+      arguments.end(),
+      {"--set", "Boundary integral/Finite-element degree=1", "--set", setting});
+    return arguments;
+  };
+  check("the finite-element stiffness of degree 5",
+        finite_elements("Boundary integral/Finite-element degree=5"));
+  check("the finite-element stiffness with nodes farther apart than the "
+        "fault is deep at degree 2",
+        finite_elements("Boundary integral/Finite-element degree=2"));
+  check("the finite-element stiffness in a box smaller than twice the fault",
+        finite_elements("Boundary integral/Domain size=700"));
+  check("the finite-element stiffness with cells growing by 3",
+        finite_elements("Boundary integral/Cell growth factor=3"));
   auto resumed = boundary_integral("Boundary integral/Element size=400");
   resumed.push_back("--resume");
   check("the boundary-integral method continued without a checkpoint", resumed);

@@ -110,6 +110,9 @@ namespace rupture
       std::vector<double>
       rows(const unsigned int begin, const unsigned int end) const override;
 
+      std::string
+      description() const override;
+
     private:
       unsigned int n;
       double       h;

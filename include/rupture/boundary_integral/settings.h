@@ -54,6 +54,9 @@ namespace rupture
       std::vector<std::pair<std::string, Point<2>>> stations;
 
       // <Boundary integral>.
+      std::string           stiffness;
+      int                   fe_degree   = 1;
+      double                domain_size = 0, cell_growth = 1;
       double                fault_depth = 0, element_size = 0;
       std::string           normal_stress, initial_shear_stress;
       double                absolute_tolerance = 0;

@@ -1,6 +1,7 @@
 #ifndef rupture_boundary_integral_stiffness_h
 #define rupture_boundary_integral_stiffness_h
 
+#include <string>
 #include <vector>
 
 namespace rupture
@@ -13,8 +14,8 @@ namespace rupture
      * and the dense stiffness K_ij, the shear traction at element i of a
      * unit slip of element j (Pa/m). The Green's function of the antiplane
      * half-space gives it in closed form (AntiplaneHalfSpace); a
-     * finite-element model can give it column by column, one solve per
-     * element (doc/design-cycles-plan.md, section 2d).
+     * finite-element model of the body gives it column by column, one
+     * solve per element (AntiplaneFiniteElements).
      */
     class Stiffness
     {
@@ -46,6 +47,10 @@ namespace rupture
       /// Rows @p begin to @p end (excluded) of K, one after the other.
       virtual std::vector<double>
       rows(const unsigned int begin, const unsigned int end) const = 0;
+
+      /// What the body and its elements are, for the screen.
+      virtual std::string
+      description() const = 0;
     };
   } // namespace BoundaryIntegral
 } // namespace rupture
