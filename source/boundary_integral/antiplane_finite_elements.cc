@@ -279,7 +279,8 @@ namespace rupture
         << settings.degree << ", " << n_cells << " cells, " << n_dofs
         << " unknowns on a " << settings.domain_size / 1e3 << " km box), "
         << size() << " fault nodes " << settings.fault_depth / size()
-        << " m apart down to " << settings.fault_depth / 1e3 << " km";
+        << " m apart" << (settings.degree > 2 ? " on average" : "")
+        << " down to " << settings.fault_depth / 1e3 << " km";
       return s.str();
     }
   } // namespace BoundaryIntegral

@@ -146,7 +146,8 @@ namespace rupture
           if (!continuing)
             {
               profiles << "# Slip profiles: the first row holds 0, 0 and the "
-                          "depths (m) of the element centres; each further "
+                          "depths (m) of the elements (their centres, or the "
+                          "fault's nodes with finite elements); each further "
                           "row t (s), the log10 of the largest slip rate "
                           "(m/s), and the slip (m) at those depths.\n0 0";
               for (unsigned int i = 0; i < geometry.size(); ++i)

@@ -1,6 +1,7 @@
 #include <rupture/base/interruption.h>
 #include <rupture/base/utilities.h>
 #include <rupture/boundary_integral/simulation.h>
+#include <rupture/simulator/parameter_messages.h>
 #include <rupture/simulator/run.h>
 #include <rupture/simulator/simulator.h>
 
@@ -226,12 +227,15 @@ namespace rupture
         {
           for (unsigned int i = 0; i + 1 < path.size(); ++i)
             prm.leave_subsection();
-          AssertThrow(false,
-                      ExcMessage(
-                        "The option --set \"" + assignment +
-                        "\" was not accepted: " + Utilities::message_of(e) +
-                        " See 'rupture --print-parameters' for the "
-                        "entries and their allowed values."));
+          AssertThrow(
+            false,
+            ExcMessage(
+              "The option --set \"" + assignment + "\" was not accepted: " +
+              ParameterMessages::reworded(Utilities::message_of(e),
+                                          dealii::Utilities::trim(
+                                            assignment.substr(0, equal))) +
+              " See 'rupture --print-parameters' for the "
+              "entries and their allowed values."));
         }
       for (unsigned int i = 0; i + 1 < path.size(); ++i)
         prm.leave_subsection();
@@ -483,6 +487,8 @@ namespace rupture
                        "> is not an entry of rupture here (an unknown name, "
                        "or one of another subsection).";
               }
+            else
+              text = ParameterMessages::reworded(text, "");
             AssertThrow(false,
                         ExcMessage(in_file + text +
                                    " See 'rupture --print-parameters' for the "

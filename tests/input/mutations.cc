@@ -268,7 +268,9 @@ namespace
                                     "basic_string",
                                     "stoi",
                                     "Additional information:",
-                                    "Stacktrace"};
+                                    "Stacktrace",
+                                    "does not match the given pattern",
+                                    "you have not yet declared"};
 } // namespace
 
 int
