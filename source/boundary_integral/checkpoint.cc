@@ -68,6 +68,9 @@ namespace rupture
                              "> is not a checkpoint of the "
                              "boundary-integral method."));
       BinaryIO::read(in, scalars);
+      AssertThrow(in.good(),
+                  ExcMessage("--resume: the checkpoint <" + read_path +
+                             "> is damaged."));
       AssertThrow(scalars.size() == 8 && scalars[7] == n_elements,
                   ExcMessage("--resume: the checkpoint <" + read_path +
                              "> has another number of elements than "
