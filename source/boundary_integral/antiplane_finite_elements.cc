@@ -2,6 +2,7 @@
 // one factorisation, one solve per fault node.
 
 #include <rupture/boundary_integral/antiplane_finite_elements.h>
+#include <rupture/boundary_integral/text.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -31,13 +32,6 @@ namespace rupture
 
     namespace
     {
-      std::string
-      number(const double x)
-      {
-        std::ostringstream s;
-        s << std::setprecision(6) << x;
-        return s.str();
-      }
 
       /// Cell sizes from @p first growing by @p growth until they add up to
       /// at least @p length.

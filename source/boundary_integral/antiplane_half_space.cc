@@ -2,6 +2,7 @@
 // traction from slip).
 
 #include <rupture/boundary_integral/antiplane_half_space.h>
+#include <rupture/boundary_integral/text.h>
 
 #include <deal.II/base/exceptions.h>
 
@@ -22,11 +23,6 @@ namespace rupture
       , mu(shear_modulus)
     {
       using dealii::ExcMessage;
-      const auto number = [](const double x) {
-        std::ostringstream s;
-        s << x;
-        return s.str();
-      };
       AssertThrow(std::isfinite(depth) && depth > 0,
                   ExcMessage("<Boundary integral/Fault depth> is " +
                              number(depth) + ", but it must be > 0 (m)."));

@@ -2,6 +2,7 @@
 
 #include <rupture/base/binary_io.h>
 #include <rupture/boundary_integral/cycle_output.h>
+#include <rupture/boundary_integral/text.h>
 #include <rupture/output/directory.h>
 #include <rupture/output/seas_format.h>
 
@@ -17,19 +18,6 @@ namespace rupture
 {
   namespace BoundaryIntegral
   {
-    namespace
-    {
-      std::string
-      number(const double x)
-      {
-        std::ostringstream s;
-        s << std::setprecision(10) << x;
-        return s.str();
-      }
-    } // namespace
-
-
-
     CycleOutput::CycleOutput(
       const Stiffness                                     &geometry,
       const std::vector<std::pair<std::string, Point<2>>> &points,

@@ -4,6 +4,7 @@
 #include <rupture/boundary_integral/settings.h>
 #include <rupture/boundary_integral/simulation.h>
 #include <rupture/boundary_integral/stiffness.h>
+#include <rupture/boundary_integral/text.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -160,15 +161,7 @@ namespace rupture
 
     namespace
     {
-      constexpr double year = 3.15576e7;
 
-      std::string
-      number(const double x)
-      {
-        std::ostringstream s;
-        s << std::setprecision(10) << x;
-        return s.str();
-      }
 
       /// The first number of the list in <Material/@p entry>.
       double

@@ -11,6 +11,7 @@
 #include <rupture/boundary_integral/quasi_dynamic_fault.h>
 #include <rupture/boundary_integral/settings.h>
 #include <rupture/boundary_integral/simulation.h>
+#include <rupture/boundary_integral/text.h>
 #include <rupture/fault/event_catalogue.h>
 #include <rupture/output/directory.h>
 #include <rupture/time_integration/dormand_prince.h>
@@ -29,15 +30,7 @@ namespace rupture
   {
     namespace
     {
-      constexpr double year = 3.15576e7;
 
-      std::string
-      number(const double x)
-      {
-        std::ostringstream s;
-        s << std::setprecision(10) << x;
-        return s.str();
-      }
 
       /// What contrib/ reads of a run (as the finite-element runs'
       /// summary.json).
