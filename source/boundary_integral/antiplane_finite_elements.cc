@@ -125,7 +125,7 @@ namespace rupture
       // Boundary ids: 0 the fault (x = 0), 1 the far side, 2 the bottom,
       // 3 the free surface.
 
-      const FE_Q<2> fe(settings.degree);
+      const FE_Q<2> fe(static_cast<unsigned int>(settings.degree));
       DoFHandler<2> dofs(mesh);
       dofs.distribute_dofs(fe);
       n_cells = mesh.n_active_cells();
@@ -224,21 +224,28 @@ namespace rupture
                          last  = std::size_t(N) * (rank + 1) / ranks;
       std::vector<double> columns;
       columns.reserve(std::size_t(last - first) * N);
-      Vector<double> u(n_dofs), b(n_dofs), r(n_dofs);
+      // The right-hand side -A u_j of u_j = 1/2 at node j is nonzero only
+      // in column j of A (its row, A being symmetric), and only the
+      // fault's rows of A u are needed: no product with the whole matrix.
+      Vector<double> u(n_dofs);
       for (unsigned int j = first; j < last; ++j)
         {
-          u               = 0;
-          u[fault_dof[j]] = 0.5;
-          A.vmult(b, u);
-          b *= -1;
-          for (types::global_dof_index i = 0; i < n_dofs; ++i)
-            if (held[i])
-              b[i] = 0;
-          solver.solve(b);
-          b[fault_dof[j]] = 0.5;
-          A.vmult(r, b);
+          const types::global_dof_index dof = fault_dof[j];
+          u                                 = 0;
+          for (auto entry = A.begin(dof); entry != A.end(dof); ++entry)
+            if (!held[entry->column()])
+              u[entry->column()] = -0.5 * entry->value();
+          solver.solve(u);
+          u[dof] = 0.5;
           for (unsigned int i = 0; i < N; ++i)
-            columns.push_back(-r[fault_dof[i]] / tributary[i]);
+            {
+              double reaction = 0;
+              for (auto entry = A.begin(fault_dof[i]);
+                   entry != A.end(fault_dof[i]);
+                   ++entry)
+                reaction += entry->value() * u[entry->column()];
+              columns.push_back(-reaction / tributary[i]);
+            }
         }
 
       // All columns on every rank, stored by rows.

@@ -70,13 +70,8 @@ namespace rupture
         if (settings.stiffness == "finite elements")
           {
             AntiplaneFiniteElements::Settings fe;
-            fe.fault_depth  = settings.fault_depth;
-            fe.node_spacing = settings.element_size;
-            AssertThrow(settings.fe_degree >= 1 && settings.fe_degree <= 4,
-                        ExcMessage("<Boundary integral/Finite-element degree> "
-                                   "is " +
-                                   std::to_string(settings.fe_degree) +
-                                   ", but it must be 1, 2, 3 or 4."));
+            fe.fault_depth   = settings.fault_depth;
+            fe.node_spacing  = settings.element_size;
             fe.degree        = settings.fe_degree;
             fe.domain_size   = settings.domain_size;
             fe.growth        = settings.cell_growth;

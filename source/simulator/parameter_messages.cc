@@ -76,8 +76,6 @@ namespace rupture
         return range("a number", bounds("Double"));
       if (starts("Integer range"))
         return range("a whole number", bounds("Integer range"));
-      if (starts("Integer"))
-        return "a whole number";
       if (starts("Bool"))
         return "true or false";
       if (starts("Selection"))

@@ -47,8 +47,8 @@ namespace rupture
         /// The node spacing (m) along the fault above W: the cells there
         /// are degree times as long.
         double node_spacing = 100;
-        /// The polynomial degree of the elements (1 to 4).
-        unsigned int degree = 2;
+        /// The polynomial degree of the elements (1 to 4; checked).
+        int degree = 2;
         /// L (m): the width and the depth of the box.
         double domain_size = 400e3;
         /// The ratio of neighbouring cells' sizes away from the fault.
