@@ -272,7 +272,10 @@ namespace rupture
                          "fault (its distance to the fault's faces is "
                       << best
                       << " m). Stations must lie on the part of the interface "
-                         "that <Fault/Fault region> makes a fault.";
+                         "that <Fault/Fault region> makes a fault, in a face "
+                         "none of whose nodes is on the fault's edge (those "
+                         "nodes are welded; at a higher degree or in coarser "
+                         "cells such faces reach farther in).";
                     error = m.str();
                     break;
                   }
