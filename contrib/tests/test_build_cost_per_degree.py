@@ -66,3 +66,12 @@ def test_compile_command_from_flags_make(script, tmp_path):
         "-march=native", "-DRUPTURE_SIMD"]
     with pytest.raises(SystemExit):
         tool.compile_command(str(tmp_path / "missing"))
+
+
+def test_factory_limit_removed(script):
+    tool = script("build-cost-per-degree")
+    text = "#if X\n#  define FE_EVAL_FACTORY_DEGREE_MAX 4\n#endif\n"
+    assert tool.without_factory_limit(text) == "#if X\n#endif\n"
+    assert tool.without_factory_limit("#if X\n#endif\n") is None
+    with open(os.path.join(TOP, tool.SOURCE)) as f:
+        assert tool.without_factory_limit(f.read()) is not None
