@@ -63,3 +63,28 @@ def test_only_finished_with_nothing_finished_says_so(script, tmp_path, monkeypat
     with pytest.raises(SystemExit) as e:
         study.main()
     assert "none of the cases has finished" in str(e.value)
+
+
+def test_save_reference_round_trip(script, tmp_path, monkeypatch):
+    study = script("degree-study-3d")
+    ref = tmp_path / "ref"
+    ref.mkdir()
+    write_station(ref, "faultst000dp075", 0.5, 2.0, 4.0)
+    write_station(ref, "faultst090dp075", 4.0, 5.0, 2.0)
+    saved = tmp_path / "reference.json"
+    monkeypatch.setattr(study.sys, "argv", [
+        "degree-study-3d", "--reference-run", str(ref), "--save-reference", str(saved),
+        "--reference-label", "a test run", "--output-dir", str(tmp_path)])
+    study.main()
+    import json
+    data = json.loads(saved.read_text())
+    assert data["label"] == "a test run"
+    assert "no summary.json" in data["note"]
+    assert data["stations"] == study.station_values(
+        str(ref), ["faultst000dp075", "faultst090dp075"])
+    # Without a run to keep it refuses.
+    monkeypatch.setattr(study.sys, "argv", [
+        "degree-study-3d", "--save-reference", str(saved), "--only-finished"])
+    with pytest.raises(SystemExit) as e:
+        study.main()
+    assert "needs --reference-run" in str(e.value)
