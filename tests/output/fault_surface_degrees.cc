@@ -26,29 +26,15 @@
 
 namespace
 {
+  /// The numbers of the first DataArray of @p text whose opening tag
+  /// @p tag (a regular expression) matches.
   std::vector<double>
-  numbers_of(const std::string &text, const std::string &name)
+  numbers_of(const std::string &text, const std::string &tag)
   {
-    const std::regex    array("Name=\"" + name + "\"[^>]*>([^<]*)<");
+    const std::regex    array(tag + "[^>]*>([^<]*)<");
     std::smatch         m;
     std::vector<double> values;
     if (std::regex_search(text, m, array))
-      {
-        std::istringstream in(m[1].str());
-        double             v;
-        while (in >> v)
-          values.push_back(v);
-      }
-    return values;
-  }
-
-  std::vector<double>
-  points_of(const std::string &text)
-  {
-    const std::regex    points("<Points><DataArray[^>]*>([^<]*)<");
-    std::smatch         m;
-    std::vector<double> values;
-    if (std::regex_search(text, m, points))
       {
         std::istringstream in(m[1].str());
         double             v;
@@ -117,9 +103,9 @@ namespace
     std::regex_search(pvd, m, std::regex("file=\"([^\"]+)\""));
     const std::string text = tests::read_file(dir + "/" + m[1].str());
 
-    const auto         xyz        = points_of(text);
-    const auto         conn       = numbers_of(text, "connectivity");
-    const auto         types      = numbers_of(text, "types");
+    const auto         xyz        = numbers_of(text, "<Points><DataArray");
+    const auto         conn       = numbers_of(text, "Name=\"connectivity\"");
+    const auto         types      = numbers_of(text, "Name=\"types\"");
     const unsigned int n_points   = xyz.size() / 3;
     const unsigned int per_cell   = (dim == 2 ? 2 : 4);
     const unsigned int n_cells    = types.size();
