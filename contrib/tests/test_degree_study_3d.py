@@ -88,3 +88,27 @@ def test_save_reference_round_trip(script, tmp_path, monkeypatch):
     with pytest.raises(SystemExit) as e:
         study.main()
     assert "needs --reference-run" in str(e.value)
+
+
+def test_from_json_measures_stored_runs_against_a_new_reference(script, tmp_path,
+                                                                monkeypatch):
+    import json
+    study = script("degree-study-3d")
+    stations = {"faultst000dp075": {"rupture": 0.5, "peak": 2.0, "slip": 4.0},
+                "faultst090dp075": {"rupture": 4.2, "peak": 4.0, "slip": 2.2}}
+    stored = tmp_path / "stored.json"
+    stored.write_text(json.dumps({"reference": "old", "runs": [
+        {"degree": 2, "h": 500.0, "fraction": 0.0, "ranks": 2, "dofs": 10, "steps": 5,
+         "wall": 12.0, "stations": stations, "errors": {}}]}))
+    reference = tmp_path / "reference.json"
+    reference.write_text(json.dumps({"label": "new", "note": "", "stations": {
+        "faultst000dp075": {"rupture": 0.5, "peak": 2.0, "slip": 4.0},
+        "faultst090dp075": {"rupture": 4.0, "peak": 5.0, "slip": 2.0}}}))
+    out = tmp_path / "out"
+    monkeypatch.setattr(study.sys, "argv", [
+        "degree-study-3d", "--from-json", str(stored), "--reference-json",
+        str(reference), "--output-dir", str(out)])
+    study.main()
+    text = (out / "tpv101-3d-degrees.md").read_text()
+    assert "Reference: new." in text
+    assert "| 2 | 500 | 250 | 0 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
