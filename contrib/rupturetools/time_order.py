@@ -139,10 +139,20 @@ def errors(m, ref):
     return out
 
 
+def observed_order(e1, e2, c1, c2):
+    """The observed order between error @p e1 at step (or Courant
+    fraction) @p c1 and @p e2 at @p c2, log(e1/e2)/log(c1/c2); None where
+    an error is zero or not finite."""
+    if not (e1 > 0 and e2 > 0 and math.isfinite(e1) and math.isfinite(e2)):
+        return None
+    return math.log(e1 / e2) / math.log(c1 / c2)
+
+
 def orders(values):
-    """log2 of the ratios of successive errors (the step halves)."""
-    return [math.log2(a / b) if a > 0 and b > 0 else float("nan")
-            for a, b in zip(values, values[1:])]
+    """The observed orders of successive errors, the step halving each
+    time (nan where one is zero or not finite)."""
+    return [float("nan") if q is None else q
+            for q in (observed_order(a, b, 2, 1) for a, b in zip(values, values[1:]))]
 
 
 PRM = os.path.join(runs.TOP, "tests", "fault", "inputs", "plane_wave.prm")

@@ -29,6 +29,12 @@ def test_order_of_a_known_power(script):
     assert study.order(math.inf, 0.1, 0.5, 0.25) is None
 
 
+def test_time_order_orders_share_the_helper():
+    from rupturetools.time_order import orders
+    got = orders([4.0, 1.0, 0.0])
+    assert abs(got[0] - 2) < 1e-12 and math.isnan(got[1])
+
+
 def test_order_rows_leave_out_the_reference(script):
     study = script("degree-study")
     rows = []

@@ -112,3 +112,19 @@ def test_from_json_measures_stored_runs_against_a_new_reference(script, tmp_path
     text = (out / "tpv101-3d-degrees.md").read_text()
     assert "Reference: new." in text
     assert "| 2 | 500 | 250 | 0 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
+
+
+def test_from_json_refuses_a_file_without_runs(script, tmp_path, monkeypatch):
+    study = script("degree-study-3d")
+    reference = tmp_path / "reference.json"
+    reference.write_text('{"label": "new", "note": "", "stations": {}}')
+    for content in ("not json", '{"reference": "x"}', '{"runs": [{"degree": 1}]}'):
+        stored = tmp_path / "stored.json"
+        stored.write_text(content)
+        monkeypatch.setattr(study.sys, "argv", [
+            "degree-study-3d", "--from-json", str(stored), "--reference-json",
+            str(reference), "--output-dir", str(tmp_path / "out")])
+        with pytest.raises(SystemExit) as e:
+            study.main()
+        assert "--from-json" in str(e.value)
+    assert not (tmp_path / "out").exists()
