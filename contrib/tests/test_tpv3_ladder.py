@@ -1,0 +1,57 @@
+"""Tests of contrib/tpv3-ladder's run settings: the layout's shift of the
+mesh, per degree and for both methods, and the names of the cases."""
+
+import pytest
+
+
+def corner(sets, entry):
+    values = [s.split("=", 1)[1] for s in sets if s.startswith(entry + "=")]
+    assert len(values) == 1, (entry, sets)
+    return [float(v) for v in values[0].split(",")]
+
+
+def test_offset_shifts_explicit_and_implicit_runs(script):
+    ladder = script("tpv3-ladder")
+    for method in ("explicit", "implicit"):
+        sets = ladder.case_sets(method, 100.0, "graded", 0.0, [], "offset", 1, "/o")
+        # Degree 1: half a cell along strike (x) and dip (z), none normal to the fault.
+        assert corner(sets, "Scene/Box/Grading/Core lower corner") == [-17950.0, -1500.0,
+                                                                       -10450.0]
+        assert corner(sets, "Scene/Box/Lower corner") == [-59950.0, -45000.0, -49950.0]
+        assert "Scene/Box/Number of cells=360, 30, 210" in sets
+
+
+def test_edges_layout_keeps_the_box(script):
+    ladder = script("tpv3-ladder")
+    sets = ladder.case_sets("explicit", 500.0, "graded", 0.0, [], "edges", 1, "/o")
+    assert not any("corner" in s for s in sets)
+
+
+def test_offset_per_degree_lands_on_area_borders(script):
+    ladder = script("tpv3-ladder")
+    # Odd degrees: the middle of the cell; even degrees: the end of the
+    # first Gauss-Lobatto node's weight (1/6 of the cell at degree 2).
+    assert ladder.offset_fraction(1) == 0.5
+    assert ladder.offset_fraction(3) == 0.5
+    assert ladder.offset_fraction(2) == pytest.approx(1.0 / 6.0)
+    assert ladder.offset_fraction(4) == pytest.approx(0.05)
+    sets = ladder.case_sets("explicit", 300.0, "graded", 0.0, [], "offset", 3, "/o")
+    assert corner(sets, "Scene/Box/Grading/Core upper corner") == [18150.0, 1500.0, 10650.0]
+    assert "Discretization/Polynomial degree=3" in sets
+    assert "Scene/Box/Number of cells=120, 10, 70" in sets
+
+
+def test_offset_refuses_cells_that_do_not_divide_the_square(script):
+    ladder = script("tpv3-ladder")
+    with pytest.raises(SystemExit):
+        ladder.case_sets("explicit", 200.0, "graded", 0.0, [], "offset", 2, "/o")
+    with pytest.raises(SystemExit):
+        ladder.case_sets("explicit", 700.0, "graded", 0.0, [], "edges", 1, "/o")
+
+
+def test_case_names(script):
+    ladder = script("tpv3-ladder")
+    assert ladder.case_name("explicit", 0.0, "", "offset", 3) == "explicit Q3 offset"
+    assert ladder.case_name("explicit", 0.0, "zone-damped-0.3", "offset", 1) == \
+        "explicit zone-damped-0.3 offset"
+    assert ladder.case_name("implicit", 0.1, "", "edges", 1, 2.0) == "implicit damped dt x2"
