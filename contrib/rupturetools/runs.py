@@ -32,6 +32,22 @@ def summary(directory):
         return None
 
 
+def facts(directory):
+    """{"dofs", "steps", "memory"} of a run from its summary.json (memory:
+    the peak resident memory of the largest rank, GB); exits with a message
+    naming the directory when the file or an entry is missing. The studies
+    read these numbers from the file the program writes, not from its
+    screen output."""
+    s = summary(directory)
+    if s is None:
+        sys.exit("no readable summary.json in %s: did the run start?" % directory)
+    try:
+        return {"dofs": int(s["dofs"]), "steps": int(s["steps"]),
+                "memory": float(s["peak memory, largest rank (B)"]) / 1e9}
+    except (KeyError, TypeError, ValueError) as e:
+        sys.exit("%s/summary.json: entry %s missing or not a number" % (directory, e))
+
+
 def finished(directory):
     s = summary(directory)
     return s is not None and s.get("status") in ("finished", "ended early")

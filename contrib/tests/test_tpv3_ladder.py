@@ -55,3 +55,16 @@ def test_case_names(script):
     assert ladder.case_name("explicit", 0.0, "zone-damped-0.3", "offset", 1) == \
         "explicit zone-damped-0.3 offset"
     assert ladder.case_name("implicit", 0.1, "", "edges", 1, 2.0) == "implicit damped dt x2"
+
+
+def test_run_facts_come_from_the_summary(tmp_path):
+    from rupturetools import runs
+    (tmp_path / "summary.json").write_text(
+        '{"status": "finished", "dofs": 1200, "steps": 31, "wall time": 2.5,'
+        ' "peak memory, largest rank (B)": 3.5e9}')
+    assert runs.facts(str(tmp_path)) == {"dofs": 1200, "steps": 31, "memory": 3.5}
+    (tmp_path / "summary.json").write_text('{"status": "finished", "dofs": 1200}')
+    with pytest.raises(SystemExit, match="steps"):
+        runs.facts(str(tmp_path))
+    with pytest.raises(SystemExit, match="no readable summary.json"):
+        runs.facts(str(tmp_path / "missing"))
