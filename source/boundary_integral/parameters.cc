@@ -53,39 +53,39 @@ namespace rupture
           "their spacing), one solve per node before the first step.");
         prm.declare_entry("Finite-element degree",
                           "2",
-                          Patterns::Integer(),
+                          Patterns::Integer(1, 4),
                           "With <Stiffness> = finite elements: the "
                           "polynomial degree (1 to 4) of the elements; the "
                           "cells at the fault are degree times <Element "
                           "size> long.");
         prm.declare_entry("Domain size",
                           "400e3",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "With <Stiffness> = finite elements: the width and "
                           "depth (m, at least twice <Fault depth>) of the "
                           "meshed box beside the fault, whose far sides "
                           "move with the plates.");
         prm.declare_entry("Cell growth factor",
                           "1.1",
-                          Patterns::Double(),
+                          Patterns::Double(1, 2),
                           "With <Stiffness> = finite elements: the ratio (> 1, "
                           "at most 2) of the sizes of neighbouring cells away "
                           "from the fault.");
         prm.declare_entry("Fault depth",
                           "40e3",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "W (m, > 0): the depth down to which the fault is "
                           "solved; below it the fault slips at <Plate "
                           "rate>, which loads the part above.");
         prm.declare_entry("Element size",
                           "100",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "The length (m, > 0) of the fault's elements (W "
                           "is cut into equal elements of at most this "
                           "length; at most 20000 of them).");
         prm.declare_entry("Plate rate",
                           "1e-9",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "V_p (m/s, > 0): the slip rate of the fault below "
                           "<Fault depth>. The fault starts at the slip rate "
                           "at which the law in its initial state carries "
@@ -110,12 +110,12 @@ namespace rupture
           "one for which it carries tau_0 - eta V_p at V_p.");
         prm.declare_entry("Relative tolerance",
                           "1e-7",
-                          Patterns::Double(),
+                          Patterns::Double(0, 1),
                           "The Dormand-Prince step's error, relative to the "
                           "slip and the state (> 0).");
         prm.declare_entry("Absolute tolerance",
                           "1e-8",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "The error (> 0) below which a change does not "
                           "matter: metres for the slip, and for the "
                           "logarithm of a state variable that spans "

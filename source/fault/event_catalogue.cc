@@ -32,7 +32,7 @@ namespace rupture
         "For earthquake cycles; not with <Mesh refinement>.");
       prm.declare_entry("Event slip rate",
                         "1e-3",
-                        Patterns::Double(),
+                        Patterns::Double(0),
                         "The slip rate (m/s, > 0) above which the fault is "
                         "in an event, 1 mm/s as in the SCEC SEAS "
                         "benchmarks.");

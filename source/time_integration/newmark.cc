@@ -36,7 +36,7 @@ namespace rupture
                           "Values above 0.5 add numerical damping.");
         prm.declare_entry("Time step",
                           "0.01",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "Time step (s), > 0. For the explicit scheme 0 "
                           "selects the stable step times <Courant "
                           "fraction>.");
@@ -47,7 +47,7 @@ namespace rupture
                           "scheme when <Time step> = 0.");
         prm.declare_entry("End time",
                           "1",
-                          Patterns::Double(),
+                          Patterns::Double(0),
                           "Time (s) at which the run ends, > 0.");
         prm.declare_entry(
           "Allow unstable time step",
@@ -71,12 +71,12 @@ namespace rupture
             "the start of the dynamic phase.");
           prm.declare_entry("Time step",
                             "3.15576e7",
-                            Patterns::Double(),
+                            Patterns::Double(0),
                             "Time step (s) of the loading phase, > 0 (one "
                             "year by default).");
           prm.declare_entry("End time",
                             "3.15576e9",
-                            Patterns::Double(),
+                            Patterns::Double(0),
                             "Time (s) at which the loading phase ends at "
                             "the latest, > 0 (100 years by default).");
           prm.declare_entry(
