@@ -52,7 +52,7 @@ def test_errors_against_a_reference_run(script, tmp_path):
     row = {"degree": 2, "h": 500.0, "fraction": 0.3, "dofs": 10, "steps": 5,
            "wall": 12.0, "stations": values, "errors": e}
     text = study.markdown([row], "test")
-    assert "| 2 | 500 | 250 | 0.3 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
+    assert "| 2 | 500 | 250 | 0.5 | 0.3 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
 
 
 def test_only_finished_with_nothing_finished_says_so(script, tmp_path, monkeypatch):
@@ -111,7 +111,7 @@ def test_from_json_measures_stored_runs_against_a_new_reference(script, tmp_path
     study.main()
     text = (out / "tpv101-3d-degrees.md").read_text()
     assert "Reference: new." in text
-    assert "| 2 | 500 | 250 | 0 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
+    assert "| 2 | 500 | 250 | 0.5 | 0 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
 
 
 def test_from_json_refuses_a_file_without_runs(script, tmp_path, monkeypatch):
@@ -128,3 +128,48 @@ def test_from_json_refuses_a_file_without_runs(script, tmp_path, monkeypatch):
             study.main()
         assert "--from-json" in str(e.value)
     assert not (tmp_path / "out").exists()
+
+
+def test_courant_fraction_names_the_run_and_is_set(script):
+    study = script("degree-study-3d")
+    assert study.case_directory("/w", 3, 750.0, 0.0) == "/w/q3-750-eta0"
+    assert study.case_directory("/w", 3, 750.0, 0.0, 0.25) == "/w/q3-750-eta0-c0.25"
+    assert "Time integration/Courant fraction=0.25" in study.case_sets(3, 750.0, 0.0, 0.25)
+
+
+def test_courant_list_is_checked(script, tmp_path, monkeypatch):
+    study = script("degree-study-3d")
+    for bad in ("fast", "0", "1.5"):
+        monkeypatch.setattr(study.sys, "argv", ["degree-study-3d", "--courant", bad,
+                                                "--only-finished", "--work-dir",
+                                                str(tmp_path)])
+        with pytest.raises(SystemExit) as e:
+            study.main()
+        assert "--courant" in str(e.value)
+
+
+def test_merge_json_keeps_earlier_runs_and_replaces_the_same_case(script, tmp_path,
+                                                                   monkeypatch):
+    import json
+    study = script("degree-study-3d")
+    stations = {"faultst000dp075": {"rupture": 0.5, "peak": 2.0, "slip": 4.0}}
+    stored = tmp_path / "stored.json"
+    stored.write_text(json.dumps({"reference": "old", "runs": [
+        {"degree": 2, "h": 500.0, "fraction": 0.0, "ranks": 2, "dofs": 10, "steps": 5,
+         "wall": 12.0, "stations": stations, "errors": {}},
+        {"degree": 3, "h": 750.0, "fraction": 0.0, "ranks": 2, "dofs": 20, "steps": 6,
+         "wall": 30.0, "stations": stations, "errors": {}}]}))
+    newer = tmp_path / "newer.json"
+    newer.write_text(json.dumps({"reference": "old", "runs": [
+        {"degree": 2, "h": 500.0, "fraction": 0.0, "courant": 0.25, "ranks": 2,
+         "dofs": 10, "steps": 10, "wall": 24.0, "stations": stations, "errors": {}}]}))
+    reference = tmp_path / "reference.json"
+    reference.write_text(json.dumps({"label": "ref", "note": "", "stations": stations}))
+    out = tmp_path / "out"
+    monkeypatch.setattr(study.sys, "argv", [
+        "degree-study-3d", "--from-json", str(newer), "--merge-json", str(stored),
+        "--reference-json", str(reference), "--output-dir", str(out)])
+    study.main()
+    rows = json.loads((out / "tpv101-3d-degrees.json").read_text())["runs"]
+    assert [(r["degree"], study.courant_of(r)) for r in rows] == [(2, 0.5), (2, 0.25),
+                                                                  (3, 0.5)]
