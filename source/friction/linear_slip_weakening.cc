@@ -129,9 +129,12 @@ namespace rupture
       };
       AssertThrow(std::isfinite(mu0) && std::isfinite(mud) && mud >= 0 &&
                     mu0 >= mud,
-                  ExcMessage("<Fault/Linear slip weakening>: mu_0 = " +
+                  ExcMessage("<Fault/Linear slip weakening/Static friction "
+                             "coefficient> gives mu_0 = " +
                              std::to_string(mu0) +
-                             " and mu_d = " + std::to_string(mud) + where() +
+                             " and <Fault/Linear slip weakening/Dynamic "
+                             "friction coefficient> mu_d = " +
+                             std::to_string(mud) + where() +
                              ", but 0 <= mu_d <= mu_0 is required."));
       AssertThrow(std::isfinite(ld) && ld > 0,
                   ExcMessage("<Fault/Linear slip weakening/Slip-weakening "

@@ -206,7 +206,11 @@ namespace rupture
                         ") and V_ini = " + std::to_string(V) + " m/s" + where +
                         " is theta = L/V0 exp(" + std::to_string(log_state) +
                         ") s, which is not a finite positive number. Check "
-                        "the traction, f0, a, b and V_ini."));
+                        "<Fault/Initial traction>, " +
+                        s + "Reference friction coefficient> (f0), " + s +
+                        "Direct effect> (a), " + s + "Evolution effect> (b), " +
+                        s + "Characteristic slip distance> (L) and " + s +
+                        "Initial slip rate> (V_ini)."));
         }
       state.variables = {theta};
     }

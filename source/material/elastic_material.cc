@@ -232,8 +232,12 @@ namespace rupture
                           std::isfinite(vp) && std::isfinite(vs) && vp > 0 &&
                           vs > 0 && vp <= speed_of_light,
                         ExcMessage("The elastic constants" + which +
-                                   " are out of range: from its <Material> "
-                                   "entries (density " +
+                                   " are out of range: from its "
+                                   "<Material/Density>, <Material/P-wave "
+                                   "speed> and <Material/S-wave speed> (or, "
+                                   "by <Material/Parametrization>, "
+                                   "<Material/Young's modulus> and "
+                                   "<Material/Poisson's ratio>) (density " +
                                    number(m.density) +
                                    " kg/m^3) follow mu = " + number(m.mu) +
                                    " Pa, lambda = " + number(m.lambda) +

@@ -55,10 +55,16 @@ namespace rupture
       {
         std::ostringstream message;
         message << "The phase of " << duration << " s with time steps of "
-                << requested_time_step << " s would take " << n_steps
-                << " steps. Allowed are 1 to 1e9 steps: check <Time "
-                   "integration/End time> and <Time step> (or those of its "
-                   "<Loading phase>).";
+                << requested_time_step << " s would take ";
+        if (n_steps < 1)
+          message << "less than one step";
+        else
+          message << n_steps << " steps";
+        message << ". Allowed are 1 to 1e9 steps: check <Time "
+                   "integration/End time>, <Time integration/Time step> and "
+                   "<Time integration/Courant fraction> (for the loading "
+                   "phase <Time integration/Loading phase/End time> and "
+                   "<Time integration/Loading phase/Time step>).";
         AssertThrow(false, ExcMessage(message.str()));
       }
     return n_steps;

@@ -4,7 +4,8 @@
 // malformed, empty, garbage bytes, expressions that overflow or divide by
 // zero, lists of the wrong length), and the file itself is broken (a missing
 // or extra "end", a truncated file, garbage lines, an unknown entry). Every
-// mutation must end with an "Error:" message that names what is wrong, or be
+// mutation must end with an "Error:" message that names what is wrong (the
+// mutated entry, one checked together with it, or the broken file), or be
 // a correct run: no signal, no raw library text in the message, no NaN or
 // Inf in any file written (text tables and the binary arrays of the volume
 // snapshots alike), no file outside the output directory, and, when the
@@ -105,6 +106,69 @@ namespace
           }
       }
     return result;
+  }
+
+  /// Every name the message puts in angle brackets (entries, files, line
+  /// numbers).
+  std::vector<std::string>
+  names_in(const std::string &message)
+  {
+    std::vector<std::string> names;
+    for (std::size_t open = message.find('<'); open != std::string::npos;
+         open             = message.find('<', open + 1))
+      {
+                    const auto close = message.find('>', open);
+                    if (close == std::string::npos)
+          break;
+        if (close - open < 120)
+          names.push_back(message.substr(open + 1, close - open - 1));
+      }
+    return names;
+  }
+
+  /// Entries that are checked together with another one, so that a message
+  /// about a bad value of the first may name the second instead (a box's
+  /// two corners and the layers inside it, lists with one value per
+  /// material name, the fault plane that must cut the box).
+  const std::vector<std::pair<std::string, std::vector<std::string>>>
+    checked_together = {{"Scene/Box/Lower corner",
+                         {"Scene/Box/Upper corner",
+                          "Scene/Box/Layer interfaces",
+                          "Fault/Plus side"}},
+                        {"Scene/Box/Upper corner",
+                         {"Scene/Box/Lower corner",
+                          "Scene/Box/Layer interfaces",
+                          "Fault/Plus side"}},
+                        {"Fault/Plane point", {"Fault/Plus side"}},
+                        {"Fault/Plane normal", {"Fault/Plus side"}},
+                        {"Material/Names", {"Material/"}}};
+
+  /// The name in the message that names the mutated @p entry: its whole
+  /// path, its last components (a message about a line of the file names
+  /// the entry as the file spells it), or an entry checked together with
+  /// it; empty if there is none.
+  std::string
+  name_of_entry(const std::string &message, const std::string &entry)
+  {
+    const auto matches = [](const std::string &name, const std::string &path) {
+      return name == path ||
+             (path.size() > name.size() &&
+              path.compare(path.size() - name.size(), name.size(), name) == 0 &&
+              path[path.size() - name.size() - 1] == '/') ||
+             // A prefix such as "Material/": any entry of that subsection.
+             (!path.empty() && path.back() == '/' && name.rfind(path, 0) == 0);
+    };
+    const auto names = names_in(message);
+    for (const auto &name : names)
+      if (matches(name, entry))
+        return name;
+    for (const auto &name : names)
+      for (const auto &[first, others] : checked_together)
+        if (first == entry)
+          for (const auto &other : others)
+            if (matches(name, other))
+              return name;
+    return "";
   }
 
   bool
@@ -326,11 +390,13 @@ main(int argc, char **argv)
       std::atoi(std::getenv("RUPTURE_MUTATION_SHIFT")) :
       0;
   unsigned int n_cases = 0, n_errors = 0, n_runs = 0, n_violations = 0;
-  const auto   run_case = [&](const std::string &base_name,
+  // @p entry: the mutated entry (empty when the file itself is broken).
+  const auto run_case = [&](const std::string &base_name,
                             const std::string &what,
                             const std::string &prm_text,
                             const Base        &base,
-                            const std::string &override_) {
+                            const std::string &override_,
+                            const std::string &entry) {
     // The output directory holds an earlier run's results, which bad input
     // must leave byte-identical.
     if (root)
@@ -375,7 +441,7 @@ main(int argc, char **argv)
           if (!before.count(f) && f.rfind("out", 0) != 0)
             violations.emplace_back("wrote " + f +
                                     " outside the output "
-                                      "directory");
+                                    "directory");
         for (const auto &f : files_below("out"))
           {
             const fs::path p = fs::path("out") / f;
@@ -386,13 +452,25 @@ main(int argc, char **argv)
             const std::string bytes = read(p.string());
             bool              decoded;
             const bool        bad = (p.extension() == ".vtu") ?
-                                        vtu_has_nonfinite(bytes, decoded) :
-                                        has_nonfinite_token(bytes);
+                                      vtu_has_nonfinite(bytes, decoded) :
+                                      has_nonfinite_token(bytes);
             // The log and parameters.prm repeat the input, which may hold
             // "nan" or "inf" as written by the user.
             if (bad && f != "log.txt" && f != "parameters.prm")
               violations.emplace_back("non-finite value in " + f);
           }
+        // A refused input names its cause: the mutated entry (or one it
+        // is checked with), or, for a broken file, the file. (A run that
+        // started and then failed, e.g. a Newton iteration that did not
+        // converge on a valid but different fault, names what to change
+        // instead.)
+        const bool refused =
+          code != 0 && !fs::exists("out/.rupture-manifest.0");
+        if (refused && !entry.empty() && name_of_entry(errors, entry).empty())
+          violations.emplace_back("the message does not name <" + entry + ">");
+        if (refused && entry.empty() &&
+            errors.find("case.prm") == std::string::npos)
+          violations.emplace_back("the message does not name the file");
         if (code == 0 && !fs::exists("out/statistics"))
           violations.emplace_back("exit 0 without statistics");
         // Refused input (the directory was never opened: no manifest)
@@ -403,7 +481,7 @@ main(int argc, char **argv)
              read("out/statistics") != "earlier results\n" ||
              read("out/log.txt") != "earlier log\n"))
           violations.emplace_back("changed the earlier results in the "
-                                    "output directory");
+                                  "output directory");
       }
 
     std::string outcome;
@@ -420,10 +498,14 @@ main(int argc, char **argv)
         const auto open  = errors.find('<');
         const auto close = errors.find('>', open);
         outcome          = fs::exists("out/.rupture-manifest.0") ?
-                               "error during the run" :
-                               "error";
-        if (open != std::string::npos && close != std::string::npos &&
-            close - open < 80)
+                             "error during the run" :
+                             "error";
+        const std::string cause =
+          entry.empty() ? "" : name_of_entry(errors, entry);
+        if (!cause.empty())
+          outcome += " naming <" + cause + ">";
+        else if (open != std::string::npos && close != std::string::npos &&
+                 close - open < 80)
           outcome += " naming " + errors.substr(open, close - open + 1);
       }
     // Garbage bytes are shown as '?'.
@@ -461,7 +543,7 @@ main(int argc, char **argv)
       const auto        entries = entries_of(text);
       AssertThrow(!entries.empty(), dealii::ExcMessage(base.file));
       // The example itself, shrunk, must run.
-      run_case(base.name, "unchanged", text, base, "");
+      run_case(base.name, "unchanged", text, base, "", "");
       // Three mutated values per entry, a different three for each entry
       // and each example.
       for (unsigned int k = 0; k < entries.size(); ++k)
@@ -474,12 +556,16 @@ main(int argc, char **argv)
             {
               const std::string &v =
                 values[(3 * k + j + 5 * b + shift) % values.size()];
-              run_case(
-                base.name, e.path + " = " + v, text, base, e.path + "=" + v);
+              run_case(base.name,
+                       e.path + " = " + v,
+                       text,
+                       base,
+                       e.path + "=" + v,
+                       e.path);
             }
         }
       for (const auto &[what, broken] : broken_files(text))
-        run_case(base.name, what, broken, base, "");
+        run_case(base.name, what, broken, base, "", "");
     }
 
   std::printf("%u cases: %u refused with a message, %u ran; %u violations\n",
