@@ -173,6 +173,23 @@ namespace rupture
           << "  \"dof-steps\": " << json_number(cost.dof_steps) << ",\n"
           << "  \"adaptation wall time\": "
           << json_number(test_mode ? 0. : fault_refinement->seconds()) << ",\n";
+    // What the stability studies read: the explicit scheme's stable step
+    // (null where none was computed), the last step, the steps cut in half.
+    out << "  \"stable time step\": "
+        << (stable_time_step > 0 ? json_number(stable_time_step) : "null")
+        << ",\n"
+        << "  \"time step\": " << json_number(state.time_step) << ",\n"
+        << "  \"step cuts\": " << newton.status().total_step_cuts << ",\n";
+    if (status == "finished" || status == "ended early")
+      {
+        const EnergyVerdict verdict = energy_verdict();
+        out << "  \"energy balance\": {\"error\": "
+            << json_number(verdict.error)
+            << ", \"scale\": " << json_number(verdict.scale)
+            << ", \"tolerance\": " << json_number(verdict.tolerance)
+            << ", \"within\": " << (verdict.within() ? "true" : "false")
+            << "},\n";
+      }
     out << "  \"time\": " << json_number(state.clock.phase_time) << ",\n"
         << "  \"time since the start of the run\": " << json_number(state.time)
         << ",\n"

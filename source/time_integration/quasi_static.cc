@@ -68,6 +68,7 @@ namespace rupture
               s.pcout << "    Newton failed with dt = " << h << " s ("
                       << failure.reason << "): the step is cut in half\n";
               ++s.newton.n_step_cuts;
+              ++s.newton.total_step_cuts;
               this->controller->reject(h);
               attempt(t_start, h / 2, depth + 1);
               attempt(t_start + h / 2, h / 2, depth + 1);

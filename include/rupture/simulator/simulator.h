@@ -377,7 +377,25 @@ namespace rupture
      * unless @p status is "failed" (rank 0 then writes what it knows).
      */
     void
-           write_summary(const std::string &status, const std::string &message);
+    write_summary(const std::string &status, const std::string &message);
+
+    /**
+     * The energy balance at the last step: its error (J), the largest
+     * energy in play (J) and the scheme's relative tolerance (round-off
+     * for the implicit and quasi-static schemes, O(dt^2) for central
+     * differences).
+     */
+    struct EnergyVerdict
+    {
+      double error, scale, tolerance;
+      bool
+      within() const
+      {
+        return std::abs(error) < tolerance * scale;
+      }
+    };
+    EnergyVerdict
+           energy_verdict() const;
     double stable_time_step;
     /// The energy budget and the forces of its trapezoidal rule.
     TimeIntegration::EnergyBudget energy;

@@ -54,6 +54,9 @@ namespace rupture
       bool stick_crossing_limit_suspended = false;
       /// Cuts of the current step.
       unsigned int n_step_cuts = 0;
+      /// Cuts of every step since this process started (a continued run
+      /// counts from its restart).
+      unsigned long total_step_cuts = 0;
       /// Newton and Krylov iterations of the last solve.
       unsigned int last_iterations        = 0;
       unsigned int last_linear_iterations = 0;
