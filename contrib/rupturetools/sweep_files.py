@@ -26,7 +26,6 @@ class SweepError(Exception):
     pass
 
 
-
 # ------------------------------------------------------------ sweep files
 
 def entry_paths(rupture):
@@ -355,7 +354,6 @@ def derived(sweep, values):
                              f"cannot be evaluated for {values}: {e}")
         namespace[name.replace(" ", "_")] = out[name]
     return out
-
 
 
 def write_atomically(path, text):

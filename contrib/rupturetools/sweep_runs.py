@@ -126,7 +126,6 @@ def run_all(sweep, cases, jobs, rupture):
         list(pool.map(one, todo))
 
 
-
 # -------------------------------------------------------------------- Slurm
 
 def slurm_options(sweep, args):

@@ -4,6 +4,8 @@ from its screen output."""
 
 import json
 
+from rupturetools import stability_cases, stability_runs
+
 STATISTICS = """# 1: Time step number
 # 2: Time (s)
 # 3: Time step size (s)
@@ -36,9 +38,8 @@ def row(step, t, newton, e=0.0):
             "e": e, "newton": newton, "open": 0, "slip": 0.1 * step, "fw": 0.0}
 
 
-def test_analyse_reads_the_files(script, tmp_path):
-    study = script("stability-study")
-    case = study.Case("time-step", "column", "implicit", "1")
+def test_analyse_reads_the_files(tmp_path):
+    case = stability_cases.Case("time-step", "column", "implicit", "1")
     run = tmp_path / "run"
     write_run(run, [row(0, 0.0, 0), row(1, 0.01, 3), row(2, 0.02, 7, e=1e-9)],
               {"status": "finished", "steps": 2, "stable time step": None,
@@ -46,7 +47,7 @@ def test_analyse_reads_the_files(script, tmp_path):
                "energy balance": {"error": 1e-9, "scale": 3.0, "tolerance": 1e-8,
                                   "within": True}})
     r = {"timeout": False, "rc": 0, "stdout": "", "stderr": "", "end": 0.02}
-    study.analyse(case, r, str(run))
+    stability_runs.analyse(case, r, str(run))
     assert r["cuts"] == 2
     assert r["dt"] == 0.01
     assert r["dt_stable"] is None
@@ -56,19 +57,17 @@ def test_analyse_reads_the_files(script, tmp_path):
     assert r["result"] == "ok" and not r["refused"]
 
 
-def test_a_refused_input_has_no_summary(script, tmp_path):
-    study = script("stability-study")
-    case = study.Case("time-step", "column", "explicit", "1")
+def test_a_refused_input_has_no_summary(tmp_path):
+    case = stability_cases.Case("time-step", "column", "explicit", "1")
     r = {"timeout": False, "rc": 1, "stdout": "", "end": 1.0,
          "stderr": "\nError: <Time integration/Time step> = -1 is not allowed.\n"}
-    study.analyse(case, r, str(tmp_path / "never-opened"))
+    stability_runs.analyse(case, r, str(tmp_path / "never-opened"))
     assert r["refused"] and r["result"] == "failed"
     assert r["cuts"] == 0 and r["last_t"] is None
 
 
-def test_balance_off_is_reported(script, tmp_path):
-    study = script("stability-study")
-    case = study.Case("time-step", "column", "explicit", "1")
+def test_balance_off_is_reported(tmp_path):
+    case = stability_cases.Case("time-step", "column", "explicit", "1")
     run = tmp_path / "run"
     write_run(run, [row(0, 0.0, 0), row(1, 0.01, 0, e=0.5)],
               {"status": "finished", "steps": 1, "stable time step": 0.02,
@@ -76,6 +75,6 @@ def test_balance_off_is_reported(script, tmp_path):
                "energy balance": {"error": 0.5, "scale": 3.0, "tolerance": 1e-2,
                                   "within": False}})
     r = {"timeout": False, "rc": 0, "stdout": "", "stderr": "", "end": 0.01}
-    study.analyse(case, r, str(run))
+    stability_runs.analyse(case, r, str(run))
     assert r["dt_stable"] == 0.02
     assert r["result"] == "ran, balance off"
