@@ -52,7 +52,7 @@ def test_errors_against_a_reference_run(script, tmp_path):
     row = {"degree": 2, "h": 500.0, "fraction": 0.3, "dofs": 10, "steps": 5,
            "wall": 12.0, "stations": values, "errors": e}
     text = study.markdown([row], "test")
-    assert "| 2 | 500 | 250 | 0.5 | 0.3 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
+    assert "| 2 | 500 | 250 | 1.2 per cell | 0.5 | 0.3 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
 
 
 def test_only_finished_with_nothing_finished_says_so(script, tmp_path, monkeypatch):
@@ -111,7 +111,7 @@ def test_from_json_measures_stored_runs_against_a_new_reference(script, tmp_path
     study.main()
     text = (out / "tpv101-3d-degrees.md").read_text()
     assert "Reference: new." in text
-    assert "| 2 | 500 | 250 | 0.5 | 0 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
+    assert "| 2 | 500 | 250 | 1.2 per cell | 0.5 | 0 | 10 | 5 | 12 | 0.200 | 20.0 % | 10.00 % |" in text
 
 
 def test_from_json_refuses_a_file_without_runs(script, tmp_path, monkeypatch):
@@ -173,3 +173,16 @@ def test_merge_json_keeps_earlier_runs_and_replaces_the_same_case(script, tmp_pa
     rows = json.loads((out / "tpv101-3d-degrees.json").read_text())["runs"]
     assert [(r["degree"], study.courant_of(r)) for r in rows] == [(2, 0.5), (2, 0.25),
                                                                   (3, 0.5)]
+
+
+def test_growth_per_node_grades_by_degree(script):
+    study = script("degree-study-3d")
+    assert study.growth_per_cell(1, 1.2) == 1.2
+    assert abs(study.growth_per_cell(3, 1.2) - 1.728) < 1e-12
+    assert study.growth_per_cell(4, 1.2) == 2.0
+    sets = study.case_sets(3, 750.0, 0.0, 0.5, per_node=1.2)
+    assert "Scene/Box/Grading/Growth factor=1.728" in sets
+    assert not any("Growth" in s for s in study.case_sets(3, 750.0, 0.0))
+    assert study.case_directory("/w", 3, 750.0, 0.0, 0.25, 1.2) == "/w/q3-750-eta0-c0.25-g1.2"
+    assert study.grading_of({"growth per node": 1.2}) == "1.2 per node"
+    assert study.grading_of({}) == "1.2 per cell"
