@@ -27,6 +27,18 @@ def parse(text, core=GRADED_CORE):
     return cases
 
 
-def core_cells(h, core=GRADED_CORE):
-    """The 'Scene/Box/Number of cells' entry for cells of @p h m in the core."""
-    return "Scene/Box/Number of cells=%d, %d, %d" % tuple(round(c / h) for c in core)
+def core_sets(h, core=GRADED_CORE):
+    """The --set entries for cells of @p h m in the core: 'Scene/Box/Number
+    of cells', and, where the core's width normal to the fault (y, the
+    fault being the plane y = 0 in the middle) would be an odd number of
+    cells, which puts no face on the fault plane, the core's corners
+    widened by one cell to an even number (1000 m: 4 cells over |y| < 2
+    km instead of 3 over |y| < 1.5 km)."""
+    n = [round(c / h) for c in core]
+    sets = []
+    if n[1] % 2:
+        n[1] += 1
+        x, y, z = core[0] / 2, n[1] * h / 2, core[2] / 2
+        sets = ["Scene/Box/Grading/Core lower corner=%g, %g, %g" % (-x, -y, -z),
+                "Scene/Box/Grading/Core upper corner=%g, %g, %g" % (x, y, z)]
+    return ["Scene/Box/Number of cells=%d, %d, %d" % tuple(n)] + sets

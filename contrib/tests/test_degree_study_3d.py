@@ -186,3 +186,17 @@ def test_growth_per_node_grades_by_degree(script):
     assert study.case_directory("/w", 3, 750.0, 0.0, 0.25, 1.2) == "/w/q3-750-eta0-c0.25-g1.2"
     assert study.grading_of({"growth per node": 1.2}) == "1.2 per node"
     assert study.grading_of({}) == "1.2 per cell"
+
+
+def test_core_keeps_a_face_on_the_fault(script):
+    study = script("degree-study-3d")
+    # 1000 m cells: 3 across the 3 km core would put the fault in a cell's
+    # middle; the core widens to 4 cells over |y| < 2 km.
+    sets = study.case_sets(4, 1000.0, 0.0)
+    assert "Scene/Box/Number of cells=36, 4, 21" in sets
+    assert "Scene/Box/Grading/Core lower corner=-18000, -2000, -10500" in sets
+    assert "Scene/Box/Grading/Core upper corner=18000, 2000, 10500" in sets
+    # An even count keeps the prm's core.
+    sets = study.case_sets(3, 750.0, 0.0)
+    assert "Scene/Box/Number of cells=48, 4, 28" in sets
+    assert not any("Core" in s for s in sets)
