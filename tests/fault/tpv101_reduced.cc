@@ -45,7 +45,10 @@ main(int argc, char **argv)
     "--set",
     "Scene/Box/Lower corner=-24000, -6000, -16500",
     "--set",
-    "Scene/Box/Upper corner=24000, 6000, 16500"};
+    "Scene/Box/Upper corner=24000, 6000, 16500",
+    // The grading of degree 1 (the prm's is that of its degree 3).
+    "--set",
+    "Scene/Box/Grading/Growth factor=1.2"};
 
   std::vector<std::string> args = {prm};
   args.insert(args.end(), coarse.begin(), coarse.end());
