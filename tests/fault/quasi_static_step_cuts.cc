@@ -11,6 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include "../json.h"
 #include "../spring_slider_reference.h"
 #include "../tests.h"
 
@@ -39,6 +40,16 @@ main(int argc, char **argv)
   std::printf("with cuts: exit code %d, steps cut: %s\n",
               code,
               cuts > 0 ? "at least one" : "none");
+  // summary.json counts the same cuts as the log, and the run closes its
+  // energy balance (the implicit tolerance).
+  const auto summary = tests::read_file("cuts/summary.json");
+  std::printf("summary.json: step cuts as in the log: %s, energy balance "
+              "within its tolerance (%s): %s\n",
+              tests::json_value(summary, "step cuts") == std::to_string(cuts) ?
+                "yes" :
+                "no",
+              tests::json_value(summary, "tolerance").c_str(),
+              tests::json_value(summary, "within").c_str());
 
   // Events: the slip rate passes 1 mm/s (interpolated in ln V).
   const auto          rows = tests::read_statistics("cuts/statistics");
