@@ -64,11 +64,14 @@ namespace rupture
                 AssertThrow(fc->is_active() && !fc->is_artificial() &&
                               fc->active_fe_index() == fe_index,
                             ExcInternalError());
-                fd.resize(cd.size());
+                fd.resize(fc->get_fe().n_dofs_per_cell());
                 fc->get_dof_indices(fd);
+                AssertThrow(matrix.m() == fd.size() && matrix.n() == cd.size(),
+                            ExcInternalError());
                 blocks.push_back({coarse_first,
                                   static_cast<unsigned int>(fine_dofs.size()),
                                   static_cast<unsigned int>(cd.size()),
+                                  static_cast<unsigned int>(fd.size()),
                                   &matrix});
                 for (const auto g : fd)
                   fine_dofs.push_back(fine_relevant->global_to_local(g));
@@ -83,7 +86,7 @@ namespace rupture
       // Each fine DoF gets the mean of what its cells give it.
       weights = 0;
       for (const auto &b : blocks)
-        for (unsigned int i = 0; i < b.n_dofs; ++i)
+        for (unsigned int i = 0; i < b.n_fine; ++i)
           weights.local_element(fine_dofs[b.fine_first + i]) += 1;
       weights.compress(VectorOperation::add);
       for (unsigned int i = 0; i < weights.locally_owned_size(); ++i)
@@ -147,11 +150,11 @@ namespace rupture
       distribute_coarse();
       fine_ghosted = 0;
       for (const Block &b : blocks)
-        for (unsigned int i = 0; i < b.n_dofs; ++i)
+        for (unsigned int i = 0; i < b.n_fine; ++i)
           {
             double             value = 0;
             const unsigned int fi    = fine_dofs[b.fine_first + i];
-            for (unsigned int j = 0; j < b.n_dofs; ++j)
+            for (unsigned int j = 0; j < b.n_coarse; ++j)
               value += (*b.matrix)(i, j) * coarse_ghosted.local_element(
                                              coarse_dofs[b.coarse_first + j]);
             fine_ghosted.local_element(fi) += weights.local_element(fi) * value;
@@ -171,13 +174,13 @@ namespace rupture
       fine_ghosted.update_ghost_values();
       coarse_ghosted = 0;
       for (const Block &b : blocks)
-        for (unsigned int i = 0; i < b.n_dofs; ++i)
+        for (unsigned int i = 0; i < b.n_fine; ++i)
           {
             const unsigned int fi = fine_dofs[b.fine_first + i];
             const double       value =
               weights.local_element(fi) * fine_ghosted.local_element(fi);
             if (value != 0)
-              for (unsigned int j = 0; j < b.n_dofs; ++j)
+              for (unsigned int j = 0; j < b.n_coarse; ++j)
                 coarse_ghosted.local_element(coarse_dofs[b.coarse_first + j]) +=
                   (*b.matrix)(i, j) * value;
           }

@@ -13,8 +13,10 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/identity_matrix.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -32,6 +34,68 @@ namespace rupture
     {
       using VectorType = LinearAlgebra::distributed::Vector<double>;
 
+      /**
+       * The degrees of the levels on the simulator's mesh, coarsest first:
+       * the degree halved down to 1 (4, 2, 1 and 3, 1), the usual
+       * p-coarsening before the mesh is coarsened.
+       */
+      std::vector<unsigned int>
+      degree_sequence(const unsigned int degree)
+      {
+        std::vector<unsigned int> degrees{degree};
+        while (degrees.back() > 1)
+          degrees.push_back(degrees.back() / 2);
+        std::reverse(degrees.begin(), degrees.end());
+        return degrees;
+      }
+
+
+
+      /// The same elements as @p fes (each side's FE_Q and FE_Nothing) at
+      /// another degree.
+      template <int dim>
+      hp::FECollection<dim>
+      at_degree(const hp::FECollection<dim> &fes, const unsigned int degree)
+      {
+        hp::FECollection<dim> result;
+        const FE_Q<dim>       q(degree);
+        for (unsigned int s = 0; s < fes.size(); ++s)
+          {
+            std::vector<const FiniteElement<dim> *> bases;
+            std::vector<unsigned int>               multiplicities;
+            for (unsigned int b = 0; b < fes[s].n_base_elements(); ++b)
+              {
+                const FiniteElement<dim> &base = fes[s].base_element(b);
+                bases.push_back(dynamic_cast<const FE_Q<dim> *>(&base) ? &q :
+                                                                         &base);
+                multiplicities.push_back(fes[s].element_multiplicity(b));
+              }
+            result.push_back(FESystem<dim>(bases, multiplicities));
+          }
+        return result;
+      }
+
+
+
+      /// A scalar FE_Q matrix (fine DoFs times coarse DoFs) on the
+      /// components of the system elements' side.
+      template <int dim>
+      FullMatrix<double>
+      on_components(const FiniteElement<dim> &fine,
+                    const FiniteElement<dim> &coarse,
+                    const FullMatrix<double> &scalar)
+      {
+        FullMatrix<double> p(fine.n_dofs_per_cell(), coarse.n_dofs_per_cell());
+        for (unsigned int i = 0; i < p.m(); ++i)
+          for (unsigned int j = 0; j < p.n(); ++j)
+            {
+              const auto ci = fine.system_to_component_index(i);
+              const auto cj = coarse.system_to_component_index(j);
+              if (ci.first == cj.first)
+                p(i, j) = scalar(ci.second, cj.second);
+            }
+        return p;
+      }
     } // namespace
 
 
@@ -41,6 +105,8 @@ namespace rupture
     {
       struct Level
       {
+        /// The polynomial degree of the level's elements.
+        unsigned int                              degree = 1;
         std::shared_ptr<const Triangulation<dim>> triangulation;
         std::unique_ptr<DoFHandler<dim>>          own_dof_handler;
         const DoFHandler<dim>                    *dof_handler = nullptr;
@@ -55,15 +121,20 @@ namespace rupture
         mutable VectorType          x, b, r, d, t, masked;
       };
 
-      MPI_Comm                                     communicator;
-      Description                                  description;
-      std::vector<std::unique_ptr<Level>>          levels;
-      std::vector<MeshTransfer<dim>>               transfers;
-      std::vector<std::vector<FullMatrix<double>>> prolongation;
-      double                                       stiffness_factor  = 1;
-      double                                       mass_factor       = 0;
-      mutable unsigned int                         coarse_iterations = 0;
-      mutable unsigned int                         n_coarse_solves   = 0;
+      MPI_Comm                            communicator;
+      Description                         description;
+      std::vector<std::unique_ptr<Level>> levels;
+      std::vector<MeshTransfer<dim>>      transfers;
+      /// The elements of each degree below the simulator's.
+      std::map<unsigned int, hp::FECollection<dim>> collections;
+      /// The prolongation matrices of the transfers (see MeshTransfer):
+      /// [0] between meshes, at the coarse levels' degree; [k] from the
+      /// (k-1)-th to the k-th degree on the simulator's mesh.
+      std::vector<std::vector<std::vector<FullMatrix<double>>>> prolongation;
+      double               stiffness_factor  = 1;
+      double               mass_factor       = 0;
+      mutable unsigned int coarse_iterations = 0;
+      mutable unsigned int n_coarse_solves   = 0;
 
       void
       setup_level(Level &level, const bool finest);
@@ -135,7 +206,7 @@ namespace rupture
                                      dh,
                                      level.constraints,
                                      *description.materials,
-                                     description.fe_degree);
+                                     level.degree);
           level.op = level.own_operator.get();
         }
       for (VectorType *v : {&level.free,
@@ -331,34 +402,53 @@ namespace rupture
       m.levels.clear();
       m.transfers.clear();
 
-      // The prolongation of each side's element: FE_Q's on the side's own
-      // components, for each child, and the identity where a cell stays.
-      const hp::FECollection<dim> &fes = *description.fe_collection;
-      const FE_Q<dim>              q(description.fe_degree);
+      // The degrees on the simulator's mesh; every coarser mesh has the
+      // lowest.
+      const hp::FECollection<dim>    &fes = *description.fe_collection;
+      const std::vector<unsigned int> degrees =
+        degree_sequence(description.fe_degree);
+      m.collections.clear();
+      for (const unsigned int d : degrees)
+        if (d != description.fe_degree)
+          m.collections.emplace(d, at_degree(fes, d));
+      const auto collection =
+        [&](const unsigned int d) -> const hp::FECollection<dim> & {
+        return d == description.fe_degree ? fes : m.collections.at(d);
+      };
+
+      // The prolongation of each side's element between meshes: FE_Q's on
+      // the side's own components, for each child, and the identity where
+      // a cell stays; between degrees, FE_Q's interpolation.
       const unsigned int n_children = GeometryInfo<dim>::max_children_per_cell;
-      m.prolongation.assign(fes.size(), {});
-      for (unsigned int s = 0; s < fes.size(); ++s)
+      m.prolongation.assign(degrees.size(), {});
+      {
+        const hp::FECollection<dim> &low = collection(degrees.front());
+        const FE_Q<dim>              q(degrees.front());
+        for (unsigned int s = 0; s < low.size(); ++s)
+          {
+            m.prolongation[0].emplace_back();
+            for (unsigned int c = 0; c < n_children; ++c)
+              m.prolongation[0][s].push_back(
+                on_components(low[s], low[s], q.get_prolongation_matrix(c)));
+            IdentityMatrix identity(low[s].n_dofs_per_cell());
+            m.prolongation[0][s].emplace_back(identity);
+          }
+      }
+      for (unsigned int k = 1; k < degrees.size(); ++k)
         {
-          const FiniteElement<dim> &fe = fes[s];
-          const unsigned int        n  = fe.n_dofs_per_cell();
-          for (unsigned int c = 0; c < n_children; ++c)
+          const hp::FECollection<dim> &fine   = collection(degrees[k]);
+          const hp::FECollection<dim> &coarse = collection(degrees[k - 1]);
+          const FE_Q<dim>              qf(degrees[k]), qc(degrees[k - 1]);
+          FullMatrix<double>           interpolation(qf.n_dofs_per_cell(),
+                                           qc.n_dofs_per_cell());
+          qf.get_interpolation_matrix(qc, interpolation);
+          for (unsigned int s = 0; s < fes.size(); ++s)
             {
-              const FullMatrix<double> &pq = q.get_prolongation_matrix(c);
-              FullMatrix<double>        p(n, n);
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  {
-                    const auto ci = fe.system_to_component_index(i);
-                    const auto cj = fe.system_to_component_index(j);
-                    if (ci.first == cj.first)
-                      p(i, j) = pq(ci.second, cj.second);
-                  }
-              m.prolongation[s].push_back(p);
+              // Only a cell that stays: the mesh is the same.
+              m.prolongation[k].emplace_back(n_children + 1);
+              m.prolongation[k][s][n_children] =
+                on_components(fine[s], coarse[s], interpolation);
             }
-          FullMatrix<double> identity(n, n);
-          for (unsigned int i = 0; i < n; ++i)
-            identity(i, i) = 1;
-          m.prolongation[s].push_back(identity);
         }
 
       const auto triangulations =
@@ -366,12 +456,13 @@ namespace rupture
           *description.triangulation,
           RepartitioningPolicyTools::FirstChildPolicy<dim>(
             *description.triangulation));
-      const unsigned int n_levels = triangulations.size();
+      const unsigned int n_meshes = triangulations.size();
+      const unsigned int n_levels = n_meshes + degrees.size() - 1;
       // A coarse cell takes the material of its first child: scenes may set
       // the materials of the active cells only.
-      for (unsigned int l = n_levels - 1; l > 0; --l)
+      for (unsigned int l = n_meshes - 1; l > 0; --l)
         {
-          const Triangulation<dim> &finer = (l + 1 == n_levels) ?
+          const Triangulation<dim> &finer = (l + 1 == n_meshes) ?
                                               *description.triangulation :
                                               *triangulations[l];
           for (const auto &cell :
@@ -384,10 +475,13 @@ namespace rupture
                 cell->set_material_id(fine_cell->material_id());
               }
         }
+      // The meshes at the lowest degree, then the simulator's mesh at each
+      // higher degree.
       for (unsigned int l = 0; l < n_levels; ++l)
         {
           auto       level = std::make_unique<typename Implementation::Level>();
           const bool finest = (l + 1 == n_levels);
+          level->degree     = degrees[l < n_meshes ? 0 : l - n_meshes + 1];
           if (finest)
             {
               level->dof_handler = description.dof_handler;
@@ -395,12 +489,19 @@ namespace rupture
             }
           else
             {
-              level->triangulation = triangulations[l];
+              const Triangulation<dim> *triangulation =
+                description.triangulation;
+              if (l + 1 < n_meshes)
+                {
+                  level->triangulation = triangulations[l];
+                  triangulation        = level->triangulation.get();
+                }
               level->own_dof_handler =
-                std::make_unique<DoFHandler<dim>>(*level->triangulation);
+                std::make_unique<DoFHandler<dim>>(*triangulation);
               if (description.set_sides)
                 description.set_sides(*level->own_dof_handler);
-              level->own_dof_handler->distribute_dofs(fes);
+              level->own_dof_handler->distribute_dofs(
+                collection(level->degree));
               level->dof_handler = level->own_dof_handler.get();
             }
           m.setup_level(*level, finest);
@@ -408,12 +509,13 @@ namespace rupture
         }
       m.transfers.resize(n_levels - 1);
       for (unsigned int l = 1; l < n_levels; ++l)
-        m.transfers[l - 1].reinit(*m.levels[l - 1]->dof_handler,
-                                  m.levels[l - 1]->relevant,
-                                  m.levels[l - 1]->constraints,
-                                  *m.levels[l]->dof_handler,
-                                  m.levels[l]->relevant,
-                                  m.prolongation);
+        m.transfers[l - 1].reinit(
+          *m.levels[l - 1]->dof_handler,
+          m.levels[l - 1]->relevant,
+          m.levels[l - 1]->constraints,
+          *m.levels[l]->dof_handler,
+          m.levels[l]->relevant,
+          m.prolongation[l < n_meshes ? 0 : l - n_meshes + 1]);
     }
 
 
@@ -557,6 +659,13 @@ namespace rupture
       for (const auto &level : impl->levels)
         s << " " << level->dof_handler->n_dofs();
       s << " DoFs";
+      if (impl->levels.back()->degree > 1)
+        {
+          s << " (degrees";
+          for (const auto &level : impl->levels)
+            s << " " << level->degree;
+          s << ")";
+        }
       if (impl->n_coarse_solves > 0)
         s << ", " << impl->coarse_iterations / impl->n_coarse_solves
           << " GMRES iterations per coarse solve";

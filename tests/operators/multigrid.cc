@@ -7,8 +7,9 @@
 // operator K and for the mass-dominated one of an implicit dynamic step, on 1
 // and 2 ranks. Block Jacobi alone needs iterations in proportion to the cells
 // across the model. The same at degrees 2 to 4 (2-D) and 2 (3-D; degree 3
-// on one mesh only, to keep the test short): the levels keep the degree and
-// coarsen in h.
+// on one mesh only, to keep the test short): the levels coarsen in degree
+// first, halving it down to 1 on the fine mesh (so Q4 has two levels more
+// than Q1 on the same mesh, Q2 and Q3 one), then in h.
 
 #include <rupture/material/elastic_material.h>
 #include <rupture/operators/elastic_operator.h>
@@ -170,8 +171,8 @@ main(int argc, char **argv)
   for (unsigned int r = 1; r <= 2; ++r)
     check<3>(r, 0., materials, out);
 
-  // Degrees 2 to 4: the levels keep the degree (coarsening in h only), so
-  // the iterations must stay bounded as the mesh is refined at each degree.
+  // Degrees 2 to 4: p-coarsening to degree 1, then in h; the iterations
+  // must stay bounded as the mesh is refined at each degree.
   for (unsigned int p = 2; p <= 4; ++p)
     {
       for (unsigned int r = 1; r <= 3; ++r)

@@ -25,7 +25,10 @@ namespace rupture
      * where the mesh did not change. Each side of the fault's hp split
      * uses the FE_Q prolongation on its own components (deal.II 9.4's
      * transfers do not take the FE_Nothing split); a fine DoF shared by
-     * several cells gets the mean of what they give it.
+     * several cells gets the mean of what they give it. Where the cell
+     * stays, the two levels may differ in degree (p-coarsening): the
+     * matrix is then FE_Q's interpolation from the coarse degree into the
+     * fine one.
      */
     template <int dim>
     class MeshTransfer
@@ -38,7 +41,9 @@ namespace rupture
        * locally relevant partitioners, and the coarse level's hanging-node
        * and welding constraints). @p prolongation holds, per active FE
        * index, the prolongation matrices of the children and, last, the
-       * identity; it must outlive this object.
+       * matrix of a cell that stays (the identity, or the interpolation
+       * between two degrees on the same mesh: fine DoFs times coarse
+       * DoFs); it must outlive this object.
        */
       void
       reinit(
@@ -71,7 +76,7 @@ namespace rupture
 
       struct Block
       {
-        unsigned int              coarse_first, fine_first, n_dofs;
+        unsigned int              coarse_first, fine_first, n_coarse, n_fine;
         const FullMatrix<double> *matrix;
       };
       std::vector<Block>        blocks;

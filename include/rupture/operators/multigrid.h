@@ -31,12 +31,15 @@ namespace rupture
      *
      * The levels are the meshes of the p4est hierarchy, coarsened globally
      * from the simulator's mesh (deal.II's global-coarsening sequence, each
-     * coarse cell on the rank of its first child). Each level has its own
+     * coarse cell on the rank of its first child), at degree 1, and above
+     * them the simulator's mesh at the degrees between 1 and its own, each
+     * half the next (p-coarsening: 4, 2, 1 or 3, 1). Each level has its own
      * hp DoFHandler with the fault's sides, so that the split of the
      * displacement field and the fault's welding are re-discretised on
      * every level, and its own matrix-free ElasticOperator. The transfer
-     * between levels is the FE_Q prolongation, cell by cell, on the side's
-     * own components (deal.II 9.4's transfers do not take the FE_Nothing
+     * between levels is the FE_Q prolongation (between meshes) or
+     * interpolation (between degrees), cell by cell, on the side's own
+     * components (deal.II 9.4's transfers do not take the FE_Nothing
      * split); restriction is its transpose.
      *
      * The fault's contact tangent on a coarser level is the restriction of
