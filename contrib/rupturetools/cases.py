@@ -3,8 +3,18 @@ of prm/tpv3, prm/tpv101 and prm/tpv103."""
 
 import sys
 
-# The uniform core of the graded box (m).
-GRADED_CORE = (36000.0, 3000.0, 21000.0)
+# The uniform core of the graded box (m): its lower and upper corners in
+# prm/tpv3, prm/tpv101 and prm/tpv103 (whole space, the hypocentre at the
+# origin) ...
+GRADED_CORE = ((-18000.0, -1500.0, -10500.0), (18000.0, 1500.0, 10500.0))
+# ... and in prm/tpv102 (half space: the core reaches the free surface
+# 7.5 km above the hypocentre).
+HALF_SPACE_CORE = ((-18000.0, -1500.0, -10500.0), (18000.0, 1500.0, 7500.0))
+
+
+def core_size(core=GRADED_CORE):
+    """The core's extent (m) along x, y, z."""
+    return tuple(u - l for l, u in zip(*core))
 
 
 def parse(text, core=GRADED_CORE):
@@ -12,6 +22,7 @@ def parse(text, core=GRADED_CORE):
     P:H, a degree outside 1..4, or (unless @p core is None) a cell size that
     does not divide the core."""
     cases = []
+    size = core_size(core) if core else None
     for item in text.split(","):
         try:
             p, h = item.split(":")
@@ -20,10 +31,11 @@ def parse(text, core=GRADED_CORE):
             sys.exit("--cases: '%s' is not P:H (degree:cell size in m)" % item)
         if not 1 <= cases[-1][0] <= 4:
             sys.exit("--cases: degree %d is not in 1..4" % cases[-1][0])
-        if core and any(abs(c / cases[-1][1] - round(c / cases[-1][1])) > 1e-9
-                        for c in core):
-            sys.exit("--cases: %g m does not divide the 36 x 3 x 21 km core of "
-                     "the graded box" % cases[-1][1])
+        if size and any(abs(c / cases[-1][1] - round(c / cases[-1][1])) > 1e-9
+                        for c in size):
+            sys.exit("--cases: %g m does not divide the %s km core of "
+                     "the graded box" % (cases[-1][1],
+                                         " x ".join("%g" % (c / 1000) for c in size)))
     return cases
 
 
@@ -34,11 +46,12 @@ def core_sets(h, core=GRADED_CORE):
     cells, which puts no face on the fault plane, the core's corners
     widened by one cell to an even number (1000 m: 4 cells over |y| < 2
     km instead of 3 over |y| < 1.5 km)."""
-    n = [round(c / h) for c in core]
+    n = [round(c / h) for c in core_size(core)]
     sets = []
     if n[1] % 2:
         n[1] += 1
-        x, y, z = core[0] / 2, n[1] * h / 2, core[2] / 2
-        sets = ["Scene/Box/Grading/Core lower corner=%g, %g, %g" % (-x, -y, -z),
-                "Scene/Box/Grading/Core upper corner=%g, %g, %g" % (x, y, z)]
+        (xl, _, zl), (xu, _, zu) = core
+        y = n[1] * h / 2
+        sets = ["Scene/Box/Grading/Core lower corner=%g, %g, %g" % (xl, -y, zl),
+                "Scene/Box/Grading/Core upper corner=%g, %g, %g" % (xu, y, zu)]
     return ["Scene/Box/Number of cells=%d, %d, %d" % tuple(n)] + sets

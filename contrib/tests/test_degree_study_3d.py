@@ -200,3 +200,27 @@ def test_core_keeps_a_face_on_the_fault(script):
     sets = study.case_sets(3, 750.0, 0.0)
     assert "Scene/Box/Number of cells=48, 4, 28" in sets
     assert not any("Core" in s for s in sets)
+
+
+def test_half_space_core_for_tpv102(script, tmp_path, monkeypatch):
+    study = script("degree-study-3d")
+    prm, core = study.BENCHMARKS["tpv102"]
+    assert prm.endswith("tpv102.prm")
+    # The core reaches the free surface: 18 km deep, 250 m divides it.
+    assert study.parse_cases("1:250,3:750", core) == [(1, 250.0), (3, 750.0)]
+    sets = study.case_sets(3, 750.0, 0.0, core=core)
+    assert "Scene/Box/Number of cells=48, 4, 24" in sets
+    # Widened normal to the fault only; the top stays at the surface.
+    sets = study.case_sets(4, 1000.0, 0.0, core=core)
+    assert "Scene/Box/Grading/Core upper corner=18000, 2000, 7500" in sets
+    assert "Scene/Box/Grading/Core lower corner=-18000, -2000, -10500" in sets
+    # 1400 m divides neither core: refused with the core's size.
+    with pytest.raises(SystemExit) as e:
+        study.parse_cases("1:1400", core)
+    assert "36 x 3 x 18 km" in str(e.value)
+    # No stored reference for tpv102: the script says what to give.
+    monkeypatch.setattr(study.sys, "argv", ["degree-study-3d", "--benchmark", "tpv102",
+                                            "--only-finished", "--work-dir", str(tmp_path)])
+    with pytest.raises(SystemExit) as e:
+        study.main()
+    assert "--reference-run" in str(e.value)

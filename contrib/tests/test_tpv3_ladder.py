@@ -68,3 +68,41 @@ def test_run_facts_come_from_the_summary(tmp_path):
         runs.facts(str(tmp_path))
     with pytest.raises(SystemExit, match="no readable summary.json"):
         runs.facts(str(tmp_path / "missing"))
+
+
+def test_adaptive_runs_start_coarse_and_refine_to_h(script):
+    ladder = script("tpv3-ladder")
+    assert ladder.adaptive_levels(750.0, 187.5) == 2
+    assert ladder.adaptive_levels(750.0, 46.875) == 4
+    for bad in (100.0, 750.0, 1500.0):
+        with pytest.raises(SystemExit):
+            ladder.adaptive_levels(750.0, bad)
+    sets = ladder.case_sets("explicit", 93.75, "graded", 0.0, [], "offset", 1, "/o",
+                            adaptive=750.0)
+    # The coarse core cells, three levels down to 93.75 m at the front ...
+    assert "Scene/Box/Number of cells=48, 4, 28" in sets
+    assert "Mesh refinement/Levels=3" in sets
+    assert "Mesh refinement/Criteria=rupture front" in sets
+    # ... and the shift of the finest cells (half of 93.75 m at degree 1),
+    # given after the fixed run's cell count, which it replaces.
+    assert "Scene/Box/Grading/Core lower corner=-17953.125, -1500, -10453.125" in sets
+    assert sets.index("Scene/Box/Number of cells=48, 4, 28") > sets.index(
+        "Scene/Box/Number of cells=384, 32, 224")
+    assert ladder.case_name("explicit", 0, "", "offset", 1, adaptive=750.0) == \
+        "explicit adaptive from 750 m offset"
+    # Implicit runs ignore it; a core it does not divide is refused.
+    assert not any("Mesh refinement" in s for s in ladder.case_sets(
+        "implicit", 93.75, "graded", 0.0, [], "offset", 1, "/o", adaptive=750.0))
+    with pytest.raises(SystemExit):
+        ladder.adaptive_sets(700.0, 175.0, "graded")
+
+
+def test_peak_dofs_and_dof_steps_from_the_statistics(script, tmp_path):
+    ladder = script("tpv3-ladder")
+    (tmp_path / "statistics").write_text(
+        "# 1: Time step number\n# 2: Time (s)\n# 3: Degrees of freedom\n"
+        "0 0 100\n1 0.1 100\n2 0.2 300\n3 0.3 200\n")
+    assert ladder.dof_measures(str(tmp_path), 200, 3) == (300, 600.0)
+    # Without the column: the summary's DoFs times the steps.
+    (tmp_path / "statistics").write_text("# 1: Time step number\n# 2: Time (s)\n0 0\n1 0.1\n")
+    assert ladder.dof_measures(str(tmp_path), 200, 3) == (200, 600.0)
