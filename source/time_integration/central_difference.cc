@@ -2,6 +2,7 @@
 #include <rupture/time_integration/central_difference.h>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace rupture
@@ -41,6 +42,12 @@ namespace rupture
         v->reinit(owned_dofs, s.kinematics.communicator());
       dof_kind.assign(owned_dofs.n_elements(), DofKind::free);
       unsigned int k = 0;
+      std::string  bad_entry;
+      const auto   text = [](const double x) {
+        std::ostringstream o;
+        o << x;
+        return o.str();
+      };
       for (const auto i : owned_dofs)
         {
           double d = lumped_mass(i) * (1 + g * rayleigh_alpha);
@@ -48,6 +55,17 @@ namespace rupture
             d += g * (*absorbing_damping)(i);
           inverse_diagonal(i) =
             (increment_constraints.is_constrained(i) || d == 0) ? 0. : 1. / d;
+          if (bad_entry.empty() && !(std::isfinite(inverse_diagonal(i)) &&
+                                     std::abs(inverse_diagonal(i)) < 1e100))
+            bad_entry =
+              " (first at DoF " + std::to_string(i) + ": lumped mass " +
+              text(lumped_mass(i)) +
+              (absorbing_damping ?
+                 ", absorbing damping " + text((*absorbing_damping)(i)) :
+                 std::string()) +
+              (hanging_constraints.is_constrained(i) ? ", a hanging node" :
+                                                       "") +
+              ")";
           if (hanging_constraints.is_constrained(i))
             dof_kind[k] = DofKind::tied;
           else if (increment_constraints.is_constrained(i))
@@ -55,11 +73,16 @@ namespace rupture
           ++k;
         }
       inverse_diagonal.compress(VectorOperation::insert);
-      AssertThrow(std::isfinite(inverse_diagonal.l2_norm()) &&
+      const std::string bad =
+        Utilities::MPI::max(bad_entry.empty() ? 0 : 1,
+                            s.kinematics.communicator()) == 0 ?
+          std::string() :
+          (bad_entry.empty() ? std::string(" (on another rank)") : bad_entry);
+      AssertThrow(bad.empty() && std::isfinite(inverse_diagonal.l2_norm()) &&
                     std::isfinite(1 + g * rayleigh_alpha),
                   ExcMessage("The diagonal M (1 + gamma dt alpha) + gamma dt "
-                             "C_absorbing of the explicit step is not finite "
-                             "with <Damping/Rayleigh alpha> = " +
+                             "C_absorbing of the explicit step is not finite" +
+                             bad + " with <Damping/Rayleigh alpha> = " +
                              std::to_string(rayleigh_alpha) +
                              " 1/s and the time step " +
                              std::to_string(s.state.time_step) +

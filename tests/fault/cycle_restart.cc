@@ -7,7 +7,8 @@
 // the same steps (the step controller's state and the compensated sum of
 // the time are in the checkpoint): the same number, and times, step
 // sizes, slip, slip rates and tractions within 1e-9 (relative; the
-// energies within 1e-9 of their scale). Not to the last digit: the
+// energies within 1e-9 of their scale, the slip rate within 1e-9 of at
+// least the plate rate). Not to the last digit: the
 // continued run's linear solves start from a new preconditioner and end
 // with other round-off (1e-14 relative in the tractions eight steps after
 // the checkpoint, an iteration count that differs by one), noise far
@@ -73,7 +74,13 @@ main(int argc, char **argv)
   const auto energy = [](const unsigned int j) {
     return (j >= 4 && j <= 8) || j == 18 || j == 19;
   };
-  bool         close      = a.size() == b.size() && !a.empty();
+  // Column 15, the largest slip rate, relative to at least the plate rate
+  // (1e-9 m/s): in the locked phase it falls to 5e-14 m/s, where the
+  // round-off the continued run carries along is a larger part of it than
+  // of anything else (1e-10 of it on one machine, 1.06e-9 on another, whose
+  // BLAS rounds otherwise: 5e-23 m/s).
+  const auto   floor = [](const unsigned int j) { return j == 15 ? 1e-9 : 0.; };
+  bool         close = a.size() == b.size() && !a.empty();
   unsigned int rate_steps = 0;
   for (unsigned int i = 0; close && i < a.size(); ++i)
     {
@@ -82,10 +89,10 @@ main(int argc, char **argv)
         scale += std::abs(a[i][j]);
       for (unsigned int j = 0; j < a[i].size(); ++j)
         if (j != 3 && j != 10)
-          close =
-            close && std::abs(a[i][j] - b[i][j]) <=
-                       1e-9 * (energy(j) ? std::max(scale, std::abs(a[i][j])) :
-                                           std::abs(a[i][j]));
+          close = close &&
+                  std::abs(a[i][j] - b[i][j]) <=
+                    1e-9 * (energy(j) ? std::max(scale, std::abs(a[i][j])) :
+                                        std::max(floor(j), std::abs(a[i][j])));
       if (i >= 500 && a[i][15] > 1e-3)
         ++rate_steps;
     }
