@@ -74,9 +74,11 @@ def test_adaptive_runs_start_coarse_and_refine_to_h(script):
     ladder = script("tpv3-ladder")
     assert ladder.adaptive_levels(750.0, 187.5) == 2
     assert ladder.adaptive_levels(750.0, 46.875) == 4
-    for bad in (100.0, 750.0, 1500.0):
+    for bad in (100.0, 750.0, 1500.0, 0.0, -187.5):
         with pytest.raises(SystemExit):
             ladder.adaptive_levels(750.0, bad)
+    with pytest.raises(SystemExit):
+        ladder.adaptive_levels(-750.0, 187.5)
     sets = ladder.case_sets("explicit", 93.75, "graded", 0.0, [], "offset", 1, "/o",
                             adaptive=750.0)
     # The coarse core cells, three levels down to 93.75 m at the front ...
