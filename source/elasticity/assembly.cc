@@ -171,26 +171,32 @@ namespace rupture
                               id) != boundary_conditions.absorbing.end())
                   {
                     // Lysmer-Kuhlemeyer dashpots, lumped to the nodes: the
-                    // normal part rho vp, the tangential part rho vs. Exact
-                    // for faces normal to a coordinate axis; on oblique faces
-                    // the coupling between components is dropped.
+                    // diagonal of the impedance sqrt(rho Gamma(n)) (normal
+                    // part rho vp, tangential part rho vs if isotropic).
+                    // Exact for isotropic materials on faces normal to a
+                    // coordinate axis; elsewhere the coupling between
+                    // components is dropped.
                     hp_faces.reinit(cell, f);
                     const FEFaceValues<dim> &fv =
                       hp_faces.get_present_fe_values();
                     absorbing.reinit(n);
-                    const double zp = m.density * m.p_wave_speed();
-                    const double zs = m.density * m.s_wave_speed();
                     for (const unsigned int q : fv.quadrature_point_indices())
-                      for (unsigned int i = 0; i < n; ++i)
-                        {
-                          const unsigned int c =
-                            cell->get_fe().system_to_component_index(i).first %
-                            dim;
-                          const double nc = fv.normal_vector(q)[c];
-                          absorbing(i) += (zp * nc * nc + zs * (1 - nc * nc)) *
-                                          fv[u].value(i, q).norm_square() *
-                                          fv.JxW(q);
-                        }
+                      {
+                        const Tensor<1, dim> z =
+                          m.template boundary_impedance<dim>(
+                            fv.normal_vector(q));
+                        for (unsigned int i = 0; i < n; ++i)
+                          {
+                            const unsigned int c =
+                              cell->get_fe()
+                                .system_to_component_index(i)
+                                .first %
+                              dim;
+                            absorbing(i) += z[c] *
+                                            fv[u].value(i, q).norm_square() *
+                                            fv.JxW(q);
+                          }
+                      }
                     discretization.hanging_constraints()
                       .distribute_local_to_global(absorbing,
                                                   dofs,

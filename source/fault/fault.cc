@@ -328,12 +328,14 @@ namespace rupture
 
     template <int dim>
     void
-    Fault<dim>::setup(const DoFHandler<dim> &dof_handler,
-                      const IndexSet        &locally_owned_dofs,
-                      const IndexSet &,
-                      AffineConstraints<double> &constraints,
-                      const std::vector<double> &shear_modulus,
-                      const MPI_Comm             comm)
+    Fault<dim>::setup(
+      const DoFHandler<dim> &dof_handler,
+      const IndexSet        &locally_owned_dofs,
+      const IndexSet &,
+      AffineConstraints<double> &constraints,
+      const std::function<double(types::material_id, const Tensor<1, dim> &)>
+                    &shear_modulus_across,
+      const MPI_Comm comm)
     {
       communicator = comm;
       AssertThrow(dof_handler.get_fe_collection().size() == 2,
@@ -341,7 +343,7 @@ namespace rupture
       const FiniteElement<dim> &fe0 = dof_handler.get_fe(0);
 
       Interface interface;
-      find_interface(dof_handler, &shear_modulus, constraints, interface);
+      find_interface(dof_handler, constraints, interface);
       auto &fault_nodes                    = interface.fault_nodes;
       auto &welded_nodes                   = interface.welded_nodes;
       auto &fault_faces                    = interface.fault_faces;
@@ -446,6 +448,8 @@ namespace rupture
               pair.area = pair.normal.norm();
               AssertThrow(pair.area > 0, ExcInternalError());
               pair.normal /= pair.area;
+              pair.shear_modulus =
+                shear_modulus_across(pair.material, pair.normal);
               pair.hanging = hanging.is_constrained(pair.minus[0]);
               {
                 std::ostringstream where;

@@ -59,7 +59,6 @@ namespace rupture
     template <int dim>
     void
     Fault<dim>::find_interface(const DoFHandler<dim>     &dof_handler,
-                               const std::vector<double> *shear_modulus,
                                AffineConstraints<double> &constraints,
                                Interface                 &result) const
     {
@@ -222,8 +221,7 @@ namespace rupture
                   const auto at = located.find(minus[k][0]);
                   AssertThrow(at != located.end(), ExcInternalError());
                   pair.location = at->second;
-                  pair.shear_modulus =
-                    shear_modulus ? (*shear_modulus)[cell->material_id()] : 0.;
+                  pair.material = cell->material_id();
                   (is_fault ? fault_nodes : welded_nodes)
                     .emplace(pair.minus[0], pair);
                 }
@@ -251,7 +249,7 @@ namespace rupture
                                 AffineConstraints<double> &constraints) const
     {
       Interface interface;
-      find_interface(dof_handler, nullptr, constraints, interface);
+      find_interface(dof_handler, constraints, interface);
       const IndexSet &owned = dof_handler.locally_owned_dofs();
       std::vector<std::pair<std::array<types::global_dof_index, dim>,
                             std::array<types::global_dof_index, dim>>>

@@ -1,8 +1,12 @@
 #include <rupture/base/utilities.h>
+#include <rupture/material/anisotropic_input.h>
 #include <rupture/material/elastic_material.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
+#include <map>
 #include <sstream>
 
 namespace rupture
@@ -12,6 +16,7 @@ namespace rupture
     double
     ElasticConstants::p_wave_speed() const
     {
+      Assert(isotropic(), ExcInternalError());
       return std::sqrt((lambda + 2 * mu) / density);
     }
 
@@ -20,6 +25,7 @@ namespace rupture
     double
     ElasticConstants::s_wave_speed() const
     {
+      Assert(isotropic(), ExcInternalError());
       return std::sqrt(mu / density);
     }
 
@@ -28,6 +34,7 @@ namespace rupture
     double
     ElasticConstants::youngs_modulus() const
     {
+      Assert(isotropic(), ExcInternalError());
       return mu * (3 * lambda + 2 * mu) / (lambda + mu);
     }
 
@@ -36,7 +43,99 @@ namespace rupture
     double
     ElasticConstants::poissons_ratio() const
     {
+      Assert(isotropic(), ExcInternalError());
       return lambda / (2 * (lambda + mu));
+    }
+
+
+
+    template <int dim>
+    SpeedRange
+    ElasticConstants::wave_speeds() const
+    {
+      return (dim == 2) ? speeds_2d : speeds_3d;
+    }
+
+
+
+    template <int dim>
+    SymmetricTensor<4, dim>
+    ElasticConstants::stiffness() const
+    {
+      return stiffness_tensor<dim>(voigt);
+    }
+
+
+
+    template <int dim>
+    SymmetricTensor<2, dim>
+    ElasticConstants::stress(const SymmetricTensor<2, dim> &strain) const
+    {
+      if (isotropic())
+        return lambda * trace(strain) * unit_symmetric_tensor<dim>() +
+               2 * mu * strain;
+      return stiffness<dim>() * strain;
+    }
+
+
+
+    namespace
+    {
+      /// The Christoffel matrix of @p c for a normal in @p dim dimensions.
+      template <int dim>
+      SymmetricTensor<2, dim>
+      christoffel(const VoigtMatrix &c, const Tensor<1, dim> &n)
+      {
+        Tensor<1, 3> n3;
+        for (unsigned int d = 0; d < dim; ++d)
+          n3[d] = n[d];
+        const SymmetricTensor<2, 3> g3 = christoffel_matrix(c, n3);
+        SymmetricTensor<2, dim>     g;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int k = i; k < dim; ++k)
+            g[i][k] = g3[i][k];
+        return g;
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    double
+    ElasticConstants::shear_modulus_across(const Tensor<1, dim> &n) const
+    {
+      if (isotropic())
+        return mu;
+      const Tensor<1, dim>          unit = n / n.norm();
+      const SymmetricTensor<2, dim> g    = christoffel<dim>(voigt, unit);
+      return (trace(g) - unit * (g * unit)) / (dim - 1);
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    ElasticConstants::boundary_impedance(const Tensor<1, dim> &n) const
+    {
+      Tensor<1, dim> z;
+      if (isotropic())
+        {
+          const double zp = density * p_wave_speed();
+          const double zs = density * s_wave_speed();
+          for (unsigned int c = 0; c < dim; ++c)
+            z[c] = zp * n[c] * n[c] + zs * (1 - n[c] * n[c]);
+          return z;
+        }
+      // sqrt(rho Gamma) from the eigenpairs of Gamma.
+      const auto pairs = eigenvectors(christoffel<dim>(voigt, n),
+                                      SymmetricTensorEigenvectorMethod::jacobi);
+      for (const auto &[value, vector] : pairs)
+        {
+          const double root = std::sqrt(density * std::max(value, 0.));
+          for (unsigned int c = 0; c < dim; ++c)
+            z[c] += root * vector[c] * vector[c];
+        }
+      return z;
     }
 
 
@@ -91,6 +190,41 @@ namespace rupture
                           "Poisson's ratio of each material, in (-1, 0.5). "
                           "Used with the parametrization \"Young's modulus "
                           "and Poisson's ratio\".");
+        prm.declare_entry(
+          "Symmetry",
+          "isotropic",
+          Patterns::Anything(),
+          "The symmetry class of each material (comma separated, or one for "
+          "all): isotropic (given by <Parametrization> and its entries), "
+          "transversely isotropic, orthotropic or general (given by "
+          "<Stiffness> in the material's own frame, which <Material axes> "
+          "turns into the model's). In 2-D (plane strain) an anisotropic "
+          "material needs the model plane to be a plane of mirror symmetry.");
+        prm.declare_entry(
+          "Stiffness",
+          "",
+          Patterns::Anything(),
+          "The stiffness constants of each anisotropic material in Voigt "
+          "notation (Pa; indices 1-6 for 11, 22, 33, 23, 13, 12 of the "
+          "material's frame), as 'C11 = 1.6e11, C33 = ...'; materials "
+          "separated by ';' (an empty field for an isotropic one), or one "
+          "field for all. Transversely isotropic (symmetry axis along the "
+          "material's 3-axis): C11, C33, C13, C44, C66 (C12 = C11 - 2 C66). "
+          "Orthotropic: C11, C22, C33, C12, C13, C23, C44, C55, C66. "
+          "General: all 21 Cij with i <= j. The tensor must be positive "
+          "definite.");
+        prm.declare_entry(
+          "Material axes",
+          "",
+          Patterns::Anything(),
+          "The orientation of each anisotropic material's frame in model "
+          "coordinates (materials separated by ';', or one field for all): "
+          "empty (the model's axes), three numbers (transversely isotropic "
+          "only: the symmetry axis, i.e. the material's 3-axis), or six "
+          "numbers (the material's 1-axis, then its 2-axis; orthogonal; the "
+          "3-axis completes a right-handed frame). Vectors have three "
+          "components also in 2-D, where the third is normal to the model "
+          "plane.");
       }
       prm.leave_subsection();
     }
@@ -134,9 +268,11 @@ namespace rupture
 
 
     void
-    ElasticMaterials::parse_parameters(ParameterHandler &prm)
+    ElasticMaterials::parse_parameters(ParameterHandler  &prm,
+                                       const unsigned int dimension)
     {
       materials.clear();
+      dim = dimension;
       prm.enter_subsection("Material");
       {
         const std::vector<std::string> names =
@@ -161,6 +297,9 @@ namespace rupture
             b = read_list(prm, "Poisson's ratio", n);
           }
 
+        const AnisotropicEntries anisotropic =
+          read_anisotropic_entries(prm, names);
+
         for (unsigned int i = 0; i < n; ++i)
           {
             ElasticConstants &m = materials[i];
@@ -178,6 +317,11 @@ namespace rupture
                           ExcMessage(message.str()));
             }
             m.density = density[i];
+            if (anisotropic.symmetry[i] != Symmetry::isotropic)
+              {
+                set_anisotropic(m, anisotropic, i, which);
+                continue;
+              }
             if (by_speeds)
               {
                 const double vp = a[i], vs = b[i];
@@ -248,9 +392,70 @@ namespace rupture
                                    "wave speeds below the speed of light (in "
                                    "SI units: e.g. 2700 kg/m^3, 6000 and "
                                    "3464 m/s)."));
+            m.voigt     = isotropic_voigt_matrix(m.lambda, m.mu);
+            m.speeds_2d = {vs, vp};
+            m.speeds_3d = {vs, vp};
           }
       }
       prm.leave_subsection();
+    }
+
+
+
+    void
+    ElasticMaterials::set_anisotropic(ElasticConstants         &m,
+                                      const AnisotropicEntries &entries,
+                                      const unsigned int        i,
+                                      const std::string        &which) const
+    {
+      m.symmetry        = entries.symmetry[i];
+      m.lambda          = std::numeric_limits<double>::quiet_NaN();
+      m.mu              = std::numeric_limits<double>::quiet_NaN();
+      m.voigt           = anisotropic_stiffness(entries, i, which);
+      const bool mirror = model_plane_is_mirror_plane(m.voigt);
+      AssertThrow(
+        dim == 3 || mirror,
+        ExcMessage(
+          "Material" + which.substr(std::string(" of material").size()) +
+          " is anisotropic, and in the model's frame (after <Material/"
+          "Material axes>) its tensor couples in-plane strains to "
+          "out-of-plane shear stresses (C14, C15, C24, C25, C46 or C56 is "
+          "not zero): the plane of x and y is not a mirror plane, so "
+          "in-plane and out-of-plane motions couple, which the 2-D "
+          "plane-strain model cannot represent. Orient the material so "
+          "that one of its symmetry planes is the model plane (for a "
+          "transversely isotropic one: its axis in the plane or normal to "
+          "it), or run in 3-D (<Dimension> = 3)."));
+      m.speeds_3d = speed_range<3>(m.voigt, m.density);
+      if (mirror)
+        m.speeds_2d = speed_range<2>(m.voigt, m.density);
+      else
+        m.speeds_2d = {std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::quiet_NaN()};
+      const SpeedRange  &s = (dim == 2 ? m.speeds_2d : m.speeds_3d);
+      const double       speed_of_light = 299792458;
+      std::ostringstream message;
+      message << "The stiffness given by <Material/Stiffness>" << which
+              << " with its <Material/Density> (" << m.density
+              << " kg/m^3) gives phase speeds from " << s.slowest << " to "
+              << s.fastest
+              << " m/s. Allowed: positive speeds below the speed of light "
+                 "(SI units: Pa and kg/m^3).";
+      AssertThrow(s.slowest > 0 && s.fastest <= speed_of_light &&
+                    std::isfinite(s.fastest),
+                  ExcMessage(message.str()));
+    }
+
+
+
+    bool
+    ElasticMaterials::any_anisotropic() const
+    {
+      return std::any_of(materials.begin(),
+                         materials.end(),
+                         [](const ElasticConstants &m) {
+                           return !m.isotropic();
+                         });
     }
 
 
@@ -294,6 +499,40 @@ namespace rupture
       for (unsigned int i = 0; i < materials.size(); ++i)
         {
           const auto &m = materials[i];
+          if (!m.isotropic())
+            {
+              // The extreme phase speeds over all directions (in 2-D: in
+              // the model plane), then those along each model axis.
+              const SpeedRange &s = (dim == 2 ? m.speeds_2d : m.speeds_3d);
+              out << "   Material " << i << " (" << m.name
+                  << "): rho = " << m.density << " kg/m^3, "
+                  << symmetry_names()[static_cast<int>(m.symmetry)]
+                  << ", phase speeds " << std::setprecision(6) << s.slowest
+                  << " to " << s.fastest << " m/s;";
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  Tensor<1, 3> n;
+                  n[d]                    = 1;
+                  std::array<double, 3> v = phase_speeds(m.voigt, m.density, n);
+                  if (dim == 2)
+                    {
+                      // In-plane polarisations only.
+                      const SymmetricTensor<2, 3> g =
+                        christoffel_matrix(m.voigt, n);
+                      const double mean = 0.5 * (g[0][0] + g[1][1]);
+                      const double half =
+                        std::hypot(0.5 * (g[0][0] - g[1][1]), g[0][1]);
+                      v[0] = std::sqrt(std::max(mean + half, 0.) / m.density);
+                      v[1] = std::sqrt(std::max(mean - half, 0.) / m.density);
+                    }
+                  out << " along "
+                      << "xyz"[d] << ": " << v[0] << ", " << v[1];
+                  if (dim == 3)
+                    out << ", " << v[2];
+                  out << " m/s" << (d + 1 < dim ? ";" : "\n");
+                }
+              continue;
+            }
           out << "   Material " << i << " (" << m.name
               << "): rho = " << m.density
               << " kg/m^3, vp = " << std::setprecision(6) << m.p_wave_speed()
@@ -303,5 +542,19 @@ namespace rupture
         }
       return out.str();
     }
+
+
+#define RUPTURE_INSTANTIATE(dim)                                               \
+  template SpeedRange              ElasticConstants::wave_speeds<dim>() const; \
+  template SymmetricTensor<4, dim> ElasticConstants::stiffness<dim>() const;   \
+  template SymmetricTensor<2, dim> ElasticConstants::stress<dim>(              \
+    const SymmetricTensor<2, dim> &) const;                                    \
+  template double ElasticConstants::shear_modulus_across<dim>(                 \
+    const Tensor<1, dim> &) const;                                             \
+  template Tensor<1, dim> ElasticConstants::boundary_impedance<dim>(           \
+    const Tensor<1, dim> &) const;
+    RUPTURE_INSTANTIATE(2)
+    RUPTURE_INSTANTIATE(3)
+#undef RUPTURE_INSTANTIATE
   } // namespace Material
 } // namespace rupture

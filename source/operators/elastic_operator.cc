@@ -63,6 +63,10 @@ namespace rupture
       unsigned int fe_degree = 1;
       /// Lame constants and density of each cell batch (one lane a cell).
       AlignedVector<Number> lambda, mu, density;
+      /// With anisotropic materials: the stiffness tensor of each cell
+      /// batch, used instead of lambda and mu in every cell.
+      bool                                           anisotropic = false;
+      AlignedVector<SymmetricTensor<4, dim, Number>> stiffness;
       /// The factors of K and M in the product of the next cell loop.
       mutable double stiffness_factor = 1, mass_factor = 0;
       /// The Kelvin-Voigt zone: 1 in the lanes of its cells, 0 elsewhere,
@@ -93,7 +97,12 @@ namespace rupture
         const Number r = m_factor * density[cell];
         for (const unsigned int q : phi.quadrature_point_indices())
           {
-            if (k_factor != 0)
+            if (k_factor != 0 && anisotropic)
+              phi.submit_symmetric_gradient(Number(k_factor) *
+                                              (stiffness[cell] *
+                                               phi.get_symmetric_gradient(q)),
+                                            q);
+            else if (k_factor != 0)
               {
                 SymmetricTensor<2, dim, Number> eps =
                   phi.get_symmetric_gradient(q);
@@ -293,6 +302,9 @@ namespace rupture
       impl->lambda.resize(n_batches);
       impl->mu.resize(n_batches);
       impl->density.resize(n_batches);
+      impl->anisotropic = materials.any_anisotropic();
+      if (impl->anisotropic)
+        impl->stiffness.resize(n_batches);
       for (unsigned int b = 0; b < n_batches; ++b)
         for (unsigned int v = 0;
              v < impl->matrix_free.n_active_entries_per_cell_batch(b);
@@ -303,6 +315,15 @@ namespace rupture
             impl->lambda[b][v]  = m.lambda;
             impl->mu[b][v]      = m.mu;
             impl->density[b][v] = m.density;
+            if (impl->anisotropic)
+              {
+                const SymmetricTensor<4, dim> c = m.template stiffness<dim>();
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = i; j < dim; ++j)
+                    for (unsigned int k = 0; k < dim; ++k)
+                      for (unsigned int l = k; l < dim; ++l)
+                        impl->stiffness[b][i][j][k][l][v] = c[i][j][k][l];
+              }
           }
     }
 
@@ -460,7 +481,8 @@ namespace rupture
     ElasticOperator<dim>::memory_consumption() const
     {
       return impl->matrix_free.memory_consumption() +
-             impl->lambda.memory_consumption() + impl->mu.memory_consumption();
+             impl->lambda.memory_consumption() + impl->mu.memory_consumption() +
+             impl->stiffness.memory_consumption();
     }
 
 

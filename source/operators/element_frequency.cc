@@ -105,6 +105,26 @@ namespace rupture
       for (unsigned int b = 0; b < dim; ++b)
         inverse[b] = 1. / h[b];
       a.reinit(dim * n_nodes, dim * n_nodes);
+      if (!material.isotropic())
+        {
+          // The block (a, c) is sum_bd a_abcd d_b d_d S^bd / rho.
+          const SymmetricTensor<4, dim> t = material.stiffness<dim>();
+          for (unsigned int ca = 0; ca < dim; ++ca)
+            for (unsigned int cc = 0; cc < dim; ++cc)
+              for (unsigned int i = 0; i < n_nodes; ++i)
+                for (unsigned int j = 0; j < n_nodes; ++j)
+                  {
+                    double value = 0;
+                    for (unsigned int b = 0; b < dim; ++b)
+                      for (unsigned int d = 0; d < dim; ++d)
+                        value += t[ca][b][cc][d] * inverse[b] * inverse[d] *
+                                 s[b][d](i, j);
+                    a(ca * n_nodes + i, cc * n_nodes + j) =
+                      value / material.density;
+                  }
+          a.set_property(LAPACKSupport::symmetric);
+          return;
+        }
       for (unsigned int ca = 0; ca < dim; ++ca)
         for (unsigned int cc = 0; cc < dim; ++cc)
           {

@@ -499,8 +499,12 @@ namespace rupture
                   const Tensor<2, dim> strain =
                     0.5 * (gradient + transpose(gradient));
                   const Tensor<2, dim> stress =
-                    m.lambda * trace(strain) * unit_symmetric_tensor<dim>() +
-                    2 * m.mu * strain;
+                    m.isotropic() ?
+                      Tensor<2, dim>(m.lambda * trace(strain) *
+                                       unit_symmetric_tensor<dim>() +
+                                     2 * m.mu * strain) :
+                      Tensor<2, dim>(m.template stress<dim>(
+                        SymmetricTensor<2, dim>(strain)));
                   for (unsigned int a = 0; a < dim; ++a)
                     for (unsigned int b = 0; b < dim; ++b)
                       values[9 * c + 3 * a + b] = stress[a][b];

@@ -27,7 +27,9 @@ namespace rupture
     timer.enter_subsection("Adapt mesh: criteria");
     double p_wave_speed = 0;
     for (unsigned int m = 0; m < materials.n_materials(); ++m)
-      p_wave_speed = std::max(p_wave_speed, materials.get(m).p_wave_speed());
+      p_wave_speed =
+        std::max(p_wave_speed,
+                 materials.get(m).template wave_speeds<dim>().fastest);
     fault_refinement->evaluate(
       state.clock.phase_time,
       steps_done == 0,

@@ -400,7 +400,7 @@ namespace rupture
     if (time_parameters.scheme ==
         TimeIntegration::Scheme::explicit_central_difference)
       elastic_system.use_lumped_mass_always();
-    materials.parse_parameters(prm);
+    materials.parse_parameters(prm, dim);
     linear_solver.parse_parameters(prm);
     // deal.II 9.4's coarsening sequence fails on locally refined meshes.
     AssertThrow(

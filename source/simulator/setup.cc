@@ -23,16 +23,16 @@ namespace rupture
     timer.leave_subsection();
     // The fault's welded nodes are tied before the constraints close.
     const auto add_fault = [&](AffineConstraints<double> &constraints) {
-      TimerOutput::Scope  t(timer, "Set up DoFs: fault");
-      std::vector<double> shear_modulus;
-      for (unsigned int m = 0; m < materials.n_materials(); ++m)
-        shear_modulus.push_back(materials.get(m).mu);
-      fault->setup(discretization.dof_handler(),
-                   discretization.locally_owned_dofs(),
-                   discretization.locally_relevant_dofs(),
-                   constraints,
-                   shear_modulus,
-                   communicator);
+      TimerOutput::Scope t(timer, "Set up DoFs: fault");
+      fault->setup(
+        discretization.dof_handler(),
+        discretization.locally_owned_dofs(),
+        discretization.locally_relevant_dofs(),
+        constraints,
+        [this](const types::material_id id, const Tensor<1, dim> &normal) {
+          return materials.get(id).template shear_modulus_across<dim>(normal);
+        },
+        communicator);
     };
     discretization.make_constraints(
       fault ? std::function<void(AffineConstraints<double> &)>(add_fault) :

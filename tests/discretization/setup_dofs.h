@@ -25,12 +25,14 @@ namespace tests
     discretization.distribute_dofs();
     discretization.make_constraints(
       [&](dealii::AffineConstraints<double> &constraints) {
-        fault.setup(discretization.dof_handler(),
-                    discretization.locally_owned_dofs(),
-                    discretization.locally_relevant_dofs(),
-                    constraints,
-                    std::vector<double>(1, mu),
-                    MPI_COMM_WORLD);
+        fault.setup(
+          discretization.dof_handler(),
+          discretization.locally_owned_dofs(),
+          discretization.locally_relevant_dofs(),
+          constraints,
+          [mu](const dealii::types::material_id,
+               const dealii::Tensor<1, dim> &) { return mu; },
+          MPI_COMM_WORLD);
       },
       boundary_conditions);
   }

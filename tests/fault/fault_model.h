@@ -87,12 +87,13 @@ namespace tests
       constraints.clear();
       constraints.reinit(relevant);
       DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-      fault->setup(dof_handler,
-                   owned,
-                   relevant,
-                   constraints,
-                   std::vector<double>(1, 3e10),
-                   MPI_COMM_WORLD);
+      fault->setup(
+        dof_handler,
+        owned,
+        relevant,
+        constraints,
+        [](const types::material_id, const Tensor<1, dim> &) { return 3e10; },
+        MPI_COMM_WORLD);
       constraints.close();
     }
 

@@ -18,6 +18,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <array>
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -133,12 +134,14 @@ namespace rupture
        * and are counted by n_new_pairs().
        */
       void
-      setup(const DoFHandler<dim>     &dof_handler,
-            const IndexSet            &locally_owned_dofs,
-            const IndexSet            &locally_relevant_dofs,
-            AffineConstraints<double> &constraints,
-            const std::vector<double> &shear_modulus_of_material,
-            const MPI_Comm             communicator);
+      setup(
+        const DoFHandler<dim>     &dof_handler,
+        const IndexSet            &locally_owned_dofs,
+        const IndexSet            &locally_relevant_dofs,
+        AffineConstraints<double> &constraints,
+        const std::function<double(types::material_id, const Tensor<1, dim> &)>
+                      &shear_modulus_across,
+        const MPI_Comm communicator);
 
       /**
        * The interface of another DoFHandler on a mesh with the same sides
@@ -645,7 +648,6 @@ namespace rupture
        */
       void
       find_interface(const DoFHandler<dim>     &dof_handler,
-                     const std::vector<double> *shear_modulus,
                      AffineConstraints<double> &constraints,
                      Interface                 &result) const;
 

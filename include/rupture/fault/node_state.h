@@ -24,6 +24,9 @@ namespace rupture
       std::array<types::global_dof_index, dim> minus;
       std::array<types::global_dof_index, dim> plus;
       Point<dim>                               location;
+      /// The material of the cell the pair was found from (its shear
+      /// stiffness across the fault: PairData::shear_modulus).
+      types::material_id material = 0;
       /// Tributary area (m^2; m in 2-D) and unit normal (minus to plus).
       double         area = 0;
       Tensor<1, dim> normal;

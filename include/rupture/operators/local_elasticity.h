@@ -17,7 +17,8 @@ namespace rupture
 
     /**
      * The element stiffness and (consistent) mass matrix of linear
-     * isotropic elasticity on the cell that @p fe_values was reinit'ed on.
+     * (isotropic or anisotropic) elasticity on the cell that @p fe_values was
+     * reinit'ed on.
      * @p u extracts the side of the displacement that lives on this cell.
      */
     template <int dim>
@@ -35,6 +36,7 @@ namespace rupture
       std::vector<SymmetricTensor<2, dim>> eps(n);
       std::vector<double>                  div(n);
       std::vector<Tensor<1, dim>>          phi(n);
+      const SymmetricTensor<4, dim>        c = m.template stiffness<dim>();
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
           const double JxW = fe_values.JxW(q);
@@ -47,9 +49,12 @@ namespace rupture
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
               {
-                k(i, j) +=
-                  (m.lambda * div[i] * div[j] + 2 * m.mu * (eps[i] * eps[j])) *
-                  JxW;
+                if (m.isotropic())
+                  k(i, j) += (m.lambda * div[i] * div[j] +
+                              2 * m.mu * (eps[i] * eps[j])) *
+                             JxW;
+                else
+                  k(i, j) += (eps[i] * (c * eps[j])) * JxW;
                 if (mass)
                   (*mass)(i, j) += m.density * (phi[i] * phi[j]) * JxW;
               }

@@ -1,0 +1,131 @@
+#ifndef rupture_material_anisotropy_h
+#define rupture_material_anisotropy_h
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace rupture
+{
+  using namespace dealii;
+
+  namespace Material
+  {
+    /**
+     * A stiffness tensor a_ijkl in Voigt notation: sigma_I = C_IJ gamma_J
+     * with I, J = 1..6 for the components 11, 22, 33, 23, 13, 12 (stored
+     * from 0) and gamma the engineering strains (gamma_4 = 2 eps_23, ...).
+     * Always three-dimensional: a 2-D plane-strain model takes its
+     * in-plane part (plane_strain_tensor()).
+     */
+    using VoigtMatrix = std::array<std::array<double, 6>, 6>;
+
+    /**
+     * The symmetry classes a material may be given in, in its own frame.
+     */
+    enum class Symmetry
+    {
+      isotropic,
+      transversely_isotropic,
+      orthotropic,
+      general
+    };
+
+    /// The names of <Material/Symmetry>, in the order of Symmetry.
+    const std::vector<std::string> &
+    symmetry_names();
+
+    /**
+     * The constants a class is given by in the material's frame, named
+     * as the Voigt entries (C11, C13, ...). Transversely isotropic: C11,
+     * C33, C13, C44, C66 with the symmetry axis along the material's
+     * 3-axis (C12 = C11 - 2 C66). Orthotropic: the nine of the diagonal
+     * blocks. General: all 21 with I <= J.
+     */
+    std::vector<std::string>
+    constant_names(const Symmetry symmetry);
+
+    /**
+     * The Voigt matrix of a class from its named constants (which must be
+     * exactly those of constant_names(); the caller checks that).
+     */
+    VoigtMatrix
+    voigt_matrix(const Symmetry                       symmetry,
+                 const std::map<std::string, double> &constants);
+
+    /// The Voigt matrix of an isotropic material with Lame's constants.
+    VoigtMatrix
+    isotropic_voigt_matrix(const double lambda, const double mu);
+
+    /**
+     * The tensor in the model's frame when the material's axes 1, 2, 3
+     * are the columns of @p axes (orthonormal, in model coordinates).
+     */
+    VoigtMatrix
+    rotate(const VoigtMatrix &c, const Tensor<2, 3> &axes);
+
+    /**
+     * The eigenvalues (ascending) of the tensor as a map of symmetric
+     * strains to stresses (its Kelvin form, whose shear rows carry a
+     * factor sqrt 2): the energy density is positive for every strain if
+     * and only if the smallest is positive.
+     */
+    std::array<double, 6>
+    kelvin_eigenvalues(const VoigtMatrix &c);
+
+    /// The Christoffel matrix Gamma_ik = a_ijkl n_j n_l for a unit @p n.
+    SymmetricTensor<2, 3>
+    christoffel_matrix(const VoigtMatrix &c, const Tensor<1, 3> &n);
+
+    /**
+     * The three phase speeds (descending: quasi-P, then the two shear
+     * waves) of plane waves travelling along the unit vector @p n.
+     */
+    std::array<double, 3>
+    phase_speeds(const VoigtMatrix  &c,
+                 const double        density,
+                 const Tensor<1, 3> &n);
+
+    /**
+     * Whether the plane x3 = 0 (the model plane of 2-D runs) is a plane
+     * of mirror symmetry, in the sense that in-plane strains cause no
+     * out-of-plane shear stress (C_I4 = C_I5 = 0 for I = 1, 2, 6, to
+     * 1e-9 of the largest entry): only then do in-plane and out-of-plane
+     * motions decouple and the 2-D plane-strain model is exact.
+     */
+    bool
+    model_plane_is_mirror_plane(const VoigtMatrix &c);
+
+    /**
+     * The 4th-order stiffness tensor in @p dim dimensions: in 3-D the
+     * whole tensor, in 2-D the plane-strain part for the components 1, 2
+     * (which model_plane_is_mirror_plane() must allow).
+     */
+    template <int dim>
+    SymmetricTensor<4, dim>
+    stiffness_tensor(const VoigtMatrix &c);
+
+    /**
+     * The extreme phase speeds over all directions of propagation, in
+     * @p dim dimensions (in 2-D: directions and polarisations in the
+     * model plane). Sampled over directions (every 2 degrees in 2-D,
+     * about 3 degrees on the sphere in 3-D), then refined locally, so
+     * accurate to about 1e-6 relative.
+     */
+    struct SpeedRange
+    {
+      double slowest = 0;
+      double fastest = 0;
+    };
+
+    template <int dim>
+    SpeedRange
+    speed_range(const VoigtMatrix &c, const double density);
+  } // namespace Material
+} // namespace rupture
+
+#endif
