@@ -448,6 +448,49 @@ def build_cases():
                                "Fault/Cochard Madariaga/Reference slip rate=%r" % V0],
                               name="sigma_0 = 1, V0 = %g" % V0))
 
+    # 11. Anisotropic rock (issue 39) on the in-plane base, both schemes:
+    # transversely isotropic media whose slowest and fastest wave speeds
+    # differ by a factor of 10, with the axis across and along the fault;
+    # a strongly anisotropic orthotropic medium rotated 30 degrees in the
+    # plane; a nearly singular tensor and one that couples in-plane and
+    # out-of-plane motion, which the input checks must refuse.
+    rho = BASES["inplane"]["rho"]
+    mu = rho * BASES["inplane"]["cs"] ** 2
+    lam = rho * BASES["inplane"]["cp"] ** 2 - 2 * mu
+    ti = ["Material/Symmetry=transversely isotropic"]
+
+    def constants(**c):
+        return "Material/Stiffness=" + ", ".join(
+            "%s = %.6e" % kv for kv in c.items())
+
+    # Shear across the planes that contain the axis (C44) 300 times softer
+    # than P along the axis: speeds sqrt(C11 / rho) / sqrt(C44 / rho) = 10.
+    soft = constants(C11=lam + 2 * mu, C33=lam + 2 * mu, C13=lam,
+                     C44=3 * mu / 100, C66=mu)
+    for scheme in both:
+        for axis, label in (("0, 1, 0", "axis across the fault"),
+                            ("1, 0, 0", "axis along the fault")):
+            cases.append(Case("anisotropy", "inplane", scheme,
+                              "TI, c_max / c_min = 10",
+                              ti + [soft, "Material/Material axes=" + axis],
+                              name=label))
+        cases.append(Case(
+            "anisotropy", "inplane", scheme, "orthotropic, 30 degrees",
+            ["Material/Symmetry=orthotropic",
+             constants(C11=4 * (lam + 2 * mu), C22=lam + 2 * mu,
+                       C33=lam + 2 * mu, C12=lam, C13=lam, C23=lam,
+                       C44=mu, C55=mu, C66=0.2 * mu),
+             "Material/Material axes=0.866, 0.5, 0, -0.5, 0.866, 0"],
+            name="C11 = 4 C22, C66 = mu / 5"))
+    cases.append(Case("anisotropy", "inplane", "explicit", "nearly singular",
+                      ti + [constants(C11=lam + 2 * mu, C33=lam + 2 * mu,
+                                      C13=lam, C44=1e-9 * mu, C66=mu)],
+                      name="C44 = 1e-9 mu"))
+    cases.append(Case("anisotropy", "inplane", "explicit",
+                      "no mirror plane",
+                      ti + [soft, "Material/Material axes=1, 0, 1"],
+                      name="axis out of the model plane"))
+
     # The in-plane explicit base, as a cheap check of the second base in --quick.
     for c in cases:
         if (c.family, c.base, c.scheme, c.value) == ("material contrast", "inplane", "explicit", "C = 1"):
@@ -554,6 +597,15 @@ FAMILIES = [
      "above the strength at rest, 6): the largest weakening rate sigma_0 / V0 "
      "from 0.05 to 1000, against the radiation impedance of the column, 1/2. "
      "The law's check refuses sigma_0 / V0 above the node's impedance."),
+    ("anisotropy", "Anisotropic rock",
+     "The in-plane base in transversely isotropic rock whose wave speeds "
+     "span a factor of 10 (C44 = 0.03 mu, the other constants the "
+     "isotropic rock's), with the symmetry axis across and along the "
+     "fault; an orthotropic rock with C11 = 4 C22 and C66 = mu / 5 rotated "
+     "30 degrees in the model plane; and two tensors the input check must "
+     "refuse: a nearly singular one (C44 = 1e-9 mu) and one whose axis "
+     "leaves the model plane, which couples in-plane and out-of-plane "
+     "motion."),
 ]
 
 

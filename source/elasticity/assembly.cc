@@ -51,19 +51,23 @@ namespace rupture
       // With the matrix-free operator, element stiffness matrices are only
       // computed for a stored mass matrix (the same loop): otherwise the
       // cells only contribute loads and lumped masses.
-      const bool            need_matrices = !stiffness_matrix_free || need_mass;
+      const bool need_matrices = !stiffness_matrix_free || need_mass;
+      // Constants that vary in space need the points of evaluation.
+      const bool        varying = materials.varies_in_space();
+      const UpdateFlags points =
+        varying ? update_quadrature_points : update_default;
       hp::FEValues<dim>     hp_values(discretization.fe_collection(),
                                   q_cells,
-                                  update_values | update_JxW_values |
+                                  update_values | update_JxW_values | points |
                                     (need_matrices ? update_gradients :
                                                          update_default));
       hp::FEValues<dim>     hp_lumped(discretization.fe_collection(),
                                   q_lumped,
-                                  update_values | update_JxW_values);
+                                  update_values | update_JxW_values | points);
       hp::FEFaceValues<dim> hp_faces(discretization.fe_collection(),
                                      q_faces,
                                      update_values | update_normal_vectors |
-                                       update_JxW_values);
+                                       update_JxW_values | points);
       hp::FEFaceValues<dim> hp_load_faces(discretization.fe_collection(),
                                           q_load_faces,
                                           update_values | update_JxW_values);
@@ -113,9 +117,20 @@ namespace rupture
               component[i] = fe.system_to_component_index(i).first -
                              u.first_vector_component;
 
+            const types::material_id id = cell->material_id();
+            const std::function<std::pair<double, double>(const Point<dim> &)>
+              factors = [&](const Point<dim> &p) {
+                return std::make_pair(materials.stiffness_factor(id, p),
+                                      materials.density_factor(id, p));
+              };
             if (need_matrices)
-              Operators::local_elasticity_matrices(
-                fe_values, u, m, k, need_mass ? &mass : nullptr);
+              Operators::local_elasticity_matrices(fe_values,
+                                                   u,
+                                                   m,
+                                                   k,
+                                                   need_mass ? &mass : nullptr,
+                                                   varying ? &factors :
+                                                             nullptr);
             if (!stiffness_matrix_free)
               discretization.hanging_constraints().distribute_local_to_global(
                 k, dofs, stiffness_matrix);
@@ -128,9 +143,14 @@ namespace rupture
             if (gravity != 0)
               for (const unsigned int q : fe_values.quadrature_point_indices())
                 for (unsigned int i = 0; i < n; ++i)
-                  load(i) += m.density *
-                             (g[component[i]] * fe_values.shape_value(i, q)) *
-                             fe_values.JxW(q);
+                  load(i) +=
+                    m.density *
+                    (varying ?
+                       materials.density_factor(id,
+                                                fe_values.quadrature_point(q)) :
+                       1.) *
+                    (g[component[i]] * fe_values.shape_value(i, q)) *
+                    fe_values.JxW(q);
 
             if (use_lumped_mass)
               {
@@ -143,6 +163,9 @@ namespace rupture
                   for (unsigned int i = 0; i < n; ++i)
                     lumped(i) +=
                       m.density *
+                      (varying ?
+                         materials.density_factor(id, lv.quadrature_point(q)) :
+                         1.) *
                       dealii::Utilities::fixed_power<2>(lv.shape_value(i, q)) *
                       lv.JxW(q);
                 discretization.hanging_constraints().distribute_local_to_global(
@@ -182,9 +205,15 @@ namespace rupture
                     absorbing.reinit(n);
                     for (const unsigned int q : fv.quadrature_point_indices())
                       {
-                        const Tensor<1, dim> z =
-                          m.template boundary_impedance<dim>(
-                            fv.normal_vector(q));
+                        Tensor<1, dim> z = m.template boundary_impedance<dim>(
+                          fv.normal_vector(q));
+                        // (Impedances scale with sqrt(s r).)
+                        if (varying)
+                          z *= std::sqrt(
+                            materials.stiffness_factor(id,
+                                                       fv.quadrature_point(q)) *
+                            materials.density_factor(id,
+                                                     fv.quadrature_point(q)));
                         for (unsigned int i = 0; i < n; ++i)
                           {
                             const unsigned int c =
@@ -380,14 +409,23 @@ namespace rupture
       FullMatrix<double>                   k, mass;
       const hp::QCollection<dim>           q_cells(
         QGauss<dim>(discretization.degree() + 1));
+      const bool        varying = materials.varies_in_space();
       hp::FEValues<dim> hp_values(discretization.fe_collection(),
                                   q_cells,
                                   update_values | update_gradients |
-                                    update_JxW_values);
+                                    update_JxW_values |
+                                    (varying ? update_quadrature_points :
+                                               update_default));
       for (const auto &cell :
            discretization.dof_handler().active_cell_iterators())
         if (cell->is_locally_owned() && (!selected || selected(cell)))
           {
+            const types::material_id id = cell->material_id();
+            const std::function<std::pair<double, double>(const Point<dim> &)>
+              factors = [&](const Point<dim> &p) {
+                return std::make_pair(materials.stiffness_factor(id, p),
+                                      materials.density_factor(id, p));
+              };
             const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
             hp_values.reinit(cell);
             const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
@@ -401,7 +439,8 @@ namespace rupture
               u,
               materials.get(cell->material_id()),
               k,
-              with_mass ? &mass : nullptr);
+              with_mass ? &mass : nullptr,
+              varying ? &factors : nullptr);
             action(cell, dofs, k, mass);
           }
     }

@@ -332,10 +332,11 @@ namespace rupture
       const DoFHandler<dim> &dof_handler,
       const IndexSet        &locally_owned_dofs,
       const IndexSet &,
-      AffineConstraints<double> &constraints,
-      const std::function<double(types::material_id, const Tensor<1, dim> &)>
-                    &shear_modulus_across,
-      const MPI_Comm comm)
+      AffineConstraints<double>                       &constraints,
+      const std::function<double(types::material_id,
+                                 const Tensor<1, dim> &,
+                                 const Point<dim> &)> &shear_modulus_across,
+      const MPI_Comm                                   comm)
     {
       communicator = comm;
       AssertThrow(dof_handler.get_fe_collection().size() == 2,
@@ -449,7 +450,7 @@ namespace rupture
               AssertThrow(pair.area > 0, ExcInternalError());
               pair.normal /= pair.area;
               pair.shear_modulus =
-                shear_modulus_across(pair.material, pair.normal);
+                shear_modulus_across(pair.material, pair.normal, pair.location);
               pair.hanging = hanging.is_constrained(pair.minus[0]);
               {
                 std::ostringstream where;

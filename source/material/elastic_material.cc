@@ -225,6 +225,23 @@ namespace rupture
           "3-axis completes a right-handed frame). Vectors have three "
           "components also in 2-D, where the third is normal to the model "
           "plane.");
+        prm.declare_entry(
+          "Stiffness factor",
+          "1",
+          Patterns::Anything(),
+          "Constants that vary in space: a factor of each material's whole "
+          "stiffness (Lame's constants or the anisotropic tensor), a "
+          "function of x, y, z (z = 0 in 2-D) or a number; materials "
+          "separated by ';', or one for all. It must be positive on the "
+          "material's cells. Wave speeds scale with the square root of "
+          "<Stiffness factor> / <Density factor>.");
+        prm.declare_entry(
+          "Density factor",
+          "1",
+          Patterns::Anything(),
+          "A factor of each material's density, a function of x, y, z (z = "
+          "0 in 2-D) or a number; materials separated by ';', or one for "
+          "all. It must be positive on the material's cells.");
       }
       prm.leave_subsection();
     }
@@ -299,6 +316,7 @@ namespace rupture
 
         const AnisotropicEntries anisotropic =
           read_anisotropic_entries(prm, names);
+        factors.parse(prm, names);
 
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -396,8 +414,59 @@ namespace rupture
             m.speeds_2d = {vs, vp};
             m.speeds_3d = {vs, vp};
           }
+
+        // Factors given as numbers are folded into the constants.
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double s = factors.constant_stiffness(i);
+            const double r = factors.constant_density(i);
+            if (s == 1 && r == 1)
+              continue;
+            ElasticConstants &m = materials[i];
+            m.lambda *= s;
+            m.mu *= s;
+            for (auto &row : m.voigt)
+              for (double &x : row)
+                x *= s;
+            m.density *= r;
+            for (SpeedRange *range : {&m.speeds_2d, &m.speeds_3d})
+              {
+                range->slowest *= std::sqrt(s / r);
+                range->fastest *= std::sqrt(s / r);
+              }
+            const SpeedRange  &v = (dim == 2 ? m.speeds_2d : m.speeds_3d);
+            std::ostringstream message;
+            message << "<Material/Stiffness factor> " << s
+                    << " and <Material/Density factor> " << r << " of material "
+                    << i << " (" << m.name << ") make its density " << m.density
+                    << " kg/m^3 and its wave speeds " << v.slowest << " to "
+                    << v.fastest
+                    << " m/s. Allowed: densities from 1e-3 to 1e6 kg/m^3 "
+                       "and speeds below the speed of light (SI units).";
+            AssertThrow(m.density >= 1e-3 && m.density <= 1e6 &&
+                          v.fastest <= 299792458,
+                        ExcMessage(message.str()));
+          }
       }
       prm.leave_subsection();
+    }
+
+
+
+    template <int dim_>
+    double
+    ElasticMaterials::check_on_mesh(const Triangulation<dim_> &mesh,
+                                    const unsigned int         degree,
+                                    const MPI_Comm communicator) const
+    {
+      const std::vector<double> scale =
+        factors.check(mesh, degree, communicator);
+      double fastest = 0;
+      for (unsigned int i = 0; i < materials.size(); ++i)
+        fastest = std::max(fastest,
+                           scale[i] *
+                             materials[i].template wave_speeds<dim_>().fastest);
+      return fastest;
     }
 
 
@@ -540,6 +609,9 @@ namespace rupture
               << " m/s, E = " << m.youngs_modulus()
               << " Pa, nu = " << m.poissons_ratio() << "\n";
         }
+      if (factors.varies())
+        out << "   Constants vary in space: <Material/Stiffness factor> and "
+               "<Material/Density factor> multiply the values above.\n";
       return out.str();
     }
 
@@ -556,5 +628,13 @@ namespace rupture
     RUPTURE_INSTANTIATE(2)
     RUPTURE_INSTANTIATE(3)
 #undef RUPTURE_INSTANTIATE
+    template double
+    ElasticMaterials::check_on_mesh<2>(const Triangulation<2> &,
+                                       const unsigned int,
+                                       const MPI_Comm) const;
+    template double
+    ElasticMaterials::check_on_mesh<3>(const Triangulation<3> &,
+                                       const unsigned int,
+                                       const MPI_Comm) const;
   } // namespace Material
 } // namespace rupture

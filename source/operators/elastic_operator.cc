@@ -28,6 +28,7 @@
 #include <deal.II/matrix_free/matrix_free.h>
 
 #include <functional>
+#include <map>
 #ifdef RUPTURE_SIMD_INSTANTIATE
 #  include <deal.II/matrix_free/dof_info.templates.h>
 #  include <deal.II/matrix_free/evaluation_template_factory.templates.h>
@@ -63,10 +64,18 @@ namespace rupture
       unsigned int fe_degree = 1;
       /// Lame constants and density of each cell batch (one lane a cell).
       AlignedVector<Number> lambda, mu, density;
-      /// With anisotropic materials: the stiffness tensor of each cell
-      /// batch, used instead of lambda and mu in every cell.
+      /// With anisotropic materials: the stiffness tensors of the cell
+      /// batches, used instead of lambda and mu in every cell. Batches
+      /// with the same materials in their lanes share one (tensor[batch]
+      /// indexes stiffness): a tensor per batch cost 88 B per DoF at Q1.
       bool                                           anisotropic = false;
       AlignedVector<SymmetricTensor<4, dim, Number>> stiffness;
+      std::vector<unsigned int>                      tensor;
+      /// Constants that vary in space: the stiffness and density factors
+      /// of each cell batch at each quadrature point (batch * n_q + q).
+      bool                  varying = false;
+      unsigned int          n_q     = 0;
+      AlignedVector<Number> stiffness_scale, density_scale;
       /// The factors of K and M in the product of the next cell loop.
       mutable double stiffness_factor = 1, mass_factor = 0;
       /// The Kelvin-Voigt zone: 1 in the lanes of its cells, 0 elsewhere,
@@ -95,11 +104,16 @@ namespace rupture
         const Number l = k_factor * lambda[cell];
         const Number m = k_factor * mu[cell];
         const Number r = m_factor * density[cell];
+        if (varying)
+          {
+            varying_quadrature_operation(phi, cell, k_factor, m_factor);
+            return;
+          }
         for (const unsigned int q : phi.quadrature_point_indices())
           {
             if (k_factor != 0 && anisotropic)
               phi.submit_symmetric_gradient(Number(k_factor) *
-                                              (stiffness[cell] *
+                                              (stiffness[tensor[cell]] *
                                                phi.get_symmetric_gradient(q)),
                                             q);
             else if (k_factor != 0)
@@ -114,6 +128,40 @@ namespace rupture
               }
             if (m_factor != 0)
               phi.submit_value(r * phi.get_value(q), q);
+          }
+      }
+
+      /// quadrature_operation() with the factors of varying constants.
+      template <class Evaluation>
+      void
+      varying_quadrature_operation(Evaluation        &phi,
+                                   const unsigned int cell,
+                                   const double       k_factor,
+                                   const double       m_factor) const
+      {
+        for (const unsigned int q : phi.quadrature_point_indices())
+          {
+            const Number sk =
+              Number(k_factor) * stiffness_scale[cell * n_q + q];
+            if (k_factor != 0 && anisotropic)
+              phi.submit_symmetric_gradient(
+                sk * (stiffness[tensor[cell]] * phi.get_symmetric_gradient(q)),
+                q);
+            else if (k_factor != 0)
+              {
+                SymmetricTensor<2, dim, Number> eps =
+                  phi.get_symmetric_gradient(q);
+                const Number trace = trace_of(eps);
+                eps *= 2. * sk * mu[cell];
+                for (unsigned int d = 0; d < dim; ++d)
+                  eps[d][d] += sk * lambda[cell] * trace;
+                phi.submit_symmetric_gradient(eps, q);
+              }
+            if (m_factor != 0)
+              phi.submit_value(Number(m_factor) * density[cell] *
+                                 density_scale[cell * n_q + q] *
+                                 phi.get_value(q),
+                               q);
           }
       }
 
@@ -295,6 +343,7 @@ namespace rupture
       AdditionalData data;
       data.tasks_parallel_scheme = AdditionalData::none;
       data.mapping_update_flags  = update_gradients | update_JxW_values;
+      impl->varying              = materials.varies_in_space();
       impl->matrix_free.reinit(
         mapping, dof_handler, constraints, QGauss<1>(fe_degree + 1), data);
 
@@ -304,27 +353,72 @@ namespace rupture
       impl->density.resize(n_batches);
       impl->anisotropic = materials.any_anisotropic();
       if (impl->anisotropic)
-        impl->stiffness.resize(n_batches);
+        impl->tensor.resize(n_batches);
+      std::map<std::vector<types::material_id>, unsigned int> patterns;
       for (unsigned int b = 0; b < n_batches; ++b)
-        for (unsigned int v = 0;
-             v < impl->matrix_free.n_active_entries_per_cell_batch(b);
-             ++v)
-          {
-            const auto &m = materials.get(
-              impl->matrix_free.get_cell_iterator(b, v)->material_id());
-            impl->lambda[b][v]  = m.lambda;
-            impl->mu[b][v]      = m.mu;
-            impl->density[b][v] = m.density;
-            if (impl->anisotropic)
+        {
+          std::vector<types::material_id> lanes;
+          for (unsigned int v = 0;
+               v < impl->matrix_free.n_active_entries_per_cell_batch(b);
+               ++v)
+            {
+              const auto &m = materials.get(
+                impl->matrix_free.get_cell_iterator(b, v)->material_id());
+              impl->lambda[b][v]  = m.lambda;
+              impl->mu[b][v]      = m.mu;
+              impl->density[b][v] = m.density;
+              lanes.push_back(
+                impl->matrix_free.get_cell_iterator(b, v)->material_id());
+            }
+          if (!impl->anisotropic)
+            continue;
+          const auto [it, added] =
+            patterns.emplace(lanes, impl->stiffness.size());
+          impl->tensor[b] = it->second;
+          if (added)
+            {
+              impl->stiffness.push_back(
+                SymmetricTensor<4, dim, typename Implementation::Number>());
+              for (unsigned int v = 0; v < lanes.size(); ++v)
+                {
+                  const SymmetricTensor<4, dim> c =
+                    materials.get(lanes[v]).template stiffness<dim>();
+                  for (unsigned int i = 0; i < dim; ++i)
+                    for (unsigned int j = i; j < dim; ++j)
+                      for (unsigned int k = 0; k < dim; ++k)
+                        for (unsigned int l = k; l < dim; ++l)
+                          impl->stiffness.back()[i][j][k][l][v] = c[i][j][k][l];
+                }
+            }
+        }
+      if (impl->varying)
+        {
+          // The factors at the quadrature points of every cell (checked to
+          // be positive by ElasticMaterials::check_on_mesh()).
+          // (In the tensor-product order of QGauss<dim>, as the cell
+          // loops' quadrature points.)
+          const QGauss<dim> gauss(fe_degree + 1);
+          impl->n_q = gauss.size();
+          impl->stiffness_scale.resize(n_batches * impl->n_q);
+          impl->density_scale.resize(n_batches * impl->n_q);
+          for (unsigned int b = 0; b < n_batches; ++b)
+            for (unsigned int v = 0;
+                 v < impl->matrix_free.n_active_entries_per_cell_batch(b);
+                 ++v)
               {
-                const SymmetricTensor<4, dim> c = m.template stiffness<dim>();
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = i; j < dim; ++j)
-                    for (unsigned int k = 0; k < dim; ++k)
-                      for (unsigned int l = k; l < dim; ++l)
-                        impl->stiffness[b][i][j][k][l][v] = c[i][j][k][l];
+                const auto cell = impl->matrix_free.get_cell_iterator(b, v);
+                for (unsigned int q = 0; q < impl->n_q; ++q)
+                  {
+                    const Point<dim> p =
+                      mapping.transform_unit_to_real_cell(cell, gauss.point(q));
+                    const types::material_id id = cell->material_id();
+                    impl->stiffness_scale[b * impl->n_q + q][v] =
+                      materials.stiffness_factor(id, p);
+                    impl->density_scale[b * impl->n_q + q][v] =
+                      materials.density_factor(id, p);
+                  }
               }
-          }
+        }
     }
 
 
@@ -482,7 +576,9 @@ namespace rupture
     {
       return impl->matrix_free.memory_consumption() +
              impl->lambda.memory_consumption() + impl->mu.memory_consumption() +
-             impl->stiffness.memory_consumption();
+             impl->stiffness.memory_consumption() +
+             impl->stiffness_scale.memory_consumption() +
+             impl->density_scale.memory_consumption();
     }
 
 

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/hp/fe_collection.h>
 #include <deal.II/hp/fe_values.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace rupture
@@ -288,14 +290,49 @@ namespace rupture
         typename DoFHandler<dim>::active_cell_iterator cell;
         double                                         bound;
       };
+      // Constants that vary in space: a cell's eigenvalues are at most
+      // (largest stiffness factor / smallest density factor) over its
+      // points times those of its shape with the material's constants
+      // (K grows at most by the one, the lumped M shrinks at most by the
+      // other). Each shape takes the largest such ratio of its cells.
+      const bool varying = materials.varies_in_space();
+      std::map<std::vector<std::int64_t>, double> shape_ratio;
+      const auto cell_ratio = [&](const auto &cell) {
+        const MappingQ1<dim> mapping;
+        double               s_max = 0, r_min = 1e300;
+        for (const Quadrature<dim> *q :
+             {&q_cells[0], static_cast<const Quadrature<dim> *>(&q_lumped[0])})
+          for (const Point<dim> &xi : q->get_points())
+            {
+              const Point<dim> p =
+                mapping.transform_unit_to_real_cell(cell, xi);
+              s_max =
+                std::max(s_max,
+                         materials.stiffness_factor(cell->material_id(), p));
+              r_min =
+                std::min(r_min,
+                         materials.density_factor(cell->material_id(), p));
+            }
+        return s_max / r_min;
+      };
+      const auto ratio_of = [&](const std::vector<std::int64_t> &key) {
+        return varying ? shape_ratio[key] : 1.;
+      };
       std::vector<NewShape>               new_shapes;
       std::set<std::vector<std::int64_t>> queued;
+      if (varying)
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              double &r = shape_ratio[cell_shape_key(cell, unit)];
+              r         = std::max(r, cell_ratio(cell));
+            }
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             auto key = cell_shape_key(cell, unit);
             if (const auto known = seen.find(key); known != seen.end())
-              omega2_max = std::max(omega2_max, known->second);
+              omega2_max = std::max(omega2_max, known->second * ratio_of(key));
             else if (queued.insert(key).second)
               {
                 double bound = std::numeric_limits<double>::infinity();
@@ -309,19 +346,25 @@ namespace rupture
           }
       std::stable_sort(new_shapes.begin(),
                        new_shapes.end(),
-                       [](const NewShape &x, const NewShape &y) {
-                         return x.bound > y.bound;
+                       [&](const NewShape &x, const NewShape &y) {
+                         return x.bound * ratio_of(x.key) >
+                                y.bound * ratio_of(y.key);
                        });
       for (const NewShape &shape : new_shapes)
-        if (shape.bound <= omega2_max)
-          seen.emplace(shape.key, shape.bound);
-        else
-          {
-            scaled_matrix(shape.cell);
-            omega2_max = largest_eigenvalue_above(a, omega2_max);
-            // The shape's largest eigenvalue is at most this.
-            seen.emplace(shape.key, omega2_max);
-          }
+        {
+          const double ratio = ratio_of(shape.key);
+          if (shape.bound * ratio <= omega2_max)
+            seen.emplace(shape.key, shape.bound);
+          else
+            {
+              scaled_matrix(shape.cell);
+              const double largest =
+                largest_eigenvalue_above(a, omega2_max / ratio);
+              omega2_max = std::max(omega2_max, largest * ratio);
+              // The shape's largest eigenvalue is at most this.
+              seen.emplace(shape.key, largest);
+            }
+        }
       omega2_max = dealii::Utilities::MPI::max(omega2_max, communicator);
       return std::sqrt(omega2_max);
     }

@@ -498,13 +498,18 @@ namespace rupture
                   const auto          &m = materials.get(cell->material_id());
                   const Tensor<2, dim> strain =
                     0.5 * (gradient + transpose(gradient));
-                  const Tensor<2, dim> stress =
+                  Tensor<2, dim> stress =
                     m.isotropic() ?
                       Tensor<2, dim>(m.lambda * trace(strain) *
                                        unit_symmetric_tensor<dim>() +
                                      2 * m.mu * strain) :
                       Tensor<2, dim>(m.template stress<dim>(
                         SymmetricTensor<2, dim>(strain)));
+                  // Constants that vary in space: the stiffness factor at
+                  // the cell's centre.
+                  if (materials.varies_in_space())
+                    stress *= materials.stiffness_factor(cell->material_id(),
+                                                         cell->center());
                   for (unsigned int a = 0; a < dim; ++a)
                     for (unsigned int b = 0; b < dim; ++b)
                       values[9 * c + 3 * a + b] = stress[a][b];

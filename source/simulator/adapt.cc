@@ -25,15 +25,10 @@ namespace rupture
     const double       wall_start = MPI_Wtime();
 
     timer.enter_subsection("Adapt mesh: criteria");
-    double p_wave_speed = 0;
-    for (unsigned int m = 0; m < materials.n_materials(); ++m)
-      p_wave_speed =
-        std::max(p_wave_speed,
-                 materials.get(m).template wave_speeds<dim>().fastest);
     fault_refinement->evaluate(
       state.clock.phase_time,
       steps_done == 0,
-      p_wave_speed,
+      fastest_wave_speed,
       state.time_step,
       current_scheme() == TimeIntegration::Scheme::explicit_central_difference);
 

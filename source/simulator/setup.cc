@@ -21,6 +21,11 @@ namespace rupture
     timer.enter_subsection("Set up DoFs: distribute");
     discretization.distribute_dofs();
     timer.leave_subsection();
+    // Constants that vary in space must be positive on this mesh.
+    fastest_wave_speed =
+      materials.check_on_mesh(discretization.dof_handler().get_triangulation(),
+                              discretization.degree(),
+                              communicator);
     // The fault's welded nodes are tied before the constraints close.
     const auto add_fault = [&](AffineConstraints<double> &constraints) {
       TimerOutput::Scope t(timer, "Set up DoFs: fault");
@@ -29,8 +34,11 @@ namespace rupture
         discretization.locally_owned_dofs(),
         discretization.locally_relevant_dofs(),
         constraints,
-        [this](const types::material_id id, const Tensor<1, dim> &normal) {
-          return materials.get(id).template shear_modulus_across<dim>(normal);
+        [this](const types::material_id id,
+               const Tensor<1, dim>    &normal,
+               const Point<dim>        &location) {
+          return materials.get(id).template shear_modulus_across<dim>(normal) *
+                 materials.stiffness_factor(id, location);
         },
         communicator);
     };

@@ -31,7 +31,8 @@ namespace tests
           discretization.locally_relevant_dofs(),
           constraints,
           [mu](const dealii::types::material_id,
-               const dealii::Tensor<1, dim> &) { return mu; },
+               const dealii::Tensor<1, dim> &,
+               const dealii::Point<dim> &) { return mu; },
           MPI_COMM_WORLD);
       },
       boundary_conditions);

@@ -92,7 +92,9 @@ namespace tests
         owned,
         relevant,
         constraints,
-        [](const types::material_id, const Tensor<1, dim> &) { return 3e10; },
+        [](const types::material_id,
+           const Tensor<1, dim> &,
+           const Point<dim> &) { return 3e10; },
         MPI_COMM_WORLD);
       constraints.close();
     }

@@ -99,6 +99,16 @@ main(int argc, char **argv)
         base + "subsection Scene\n  subsection Box\n    subsection Grading\n"
                "      set Growth factor = 1.2\n      set Core lower corner = "
                "-100, 0\n    end\n  end\nend\n");
+  write("stiffness_factor.prm",
+        base + "subsection Material\n  set Stiffness factor = 1 - x / "
+               "500\nend\n");
+  write("density_factor.prm",
+        base + "subsection Material\n  set Density factor = -2\nend\n");
+  write("anisotropic_2d.prm",
+        base + "subsection Material\n  set Symmetry = transversely "
+               "isotropic\n  set Stiffness = C11 = 6e10, C33 = 4e10, C13 = "
+               "1.5e10, C44 = 1.2e10, C66 = 2e10\n  set Material axes = 1, 0, "
+               "1\nend\n");
   write("function.prm",
         base + "subsection Initial conditions\n  set Displacement = "
                "sin(q*x); 0\nend\n");
@@ -214,6 +224,10 @@ main(int argc, char **argv)
   check("material id without material", {"material_id.prm"});
   check("graded box whose core leaves the box", {"grading_core.prm"});
   check("function with an unknown variable", {"function.prm"});
+  check("stiffness factor not positive on the cells", {"stiffness_factor.prm"});
+  check("negative density factor", {"density_factor.prm"});
+  check("2-D anisotropic material without a mirror plane",
+        {"anisotropic_2d.prm"});
   check("fault plane that cuts through cells", {"fault_plane.prm"});
   check("negative fault penalty", {"fault_penalty.prm"});
   check("penalty contact with the explicit scheme", {"fault_explicit.prm"});

@@ -14,6 +14,7 @@
 
 #include "../tests.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -137,9 +138,15 @@ main(int argc, char **argv)
     std::getline(in, line);
     // "6 cases in DIR: 3 done already, 3 to run, ..."
     std::printf("resume: %s\n", line.substr(line.find(": ") + 2).c_str());
+    // The cases run two at a time and finish in any order (a loaded
+    // machine changed it): sorted by case.
+    std::vector<std::string> ran;
     while (std::getline(in, line))
       if (line.find("case-") != std::string::npos)
-        std::printf("  ran%s\n", line.substr(line.find(']') + 1).c_str());
+        ran.push_back(line.substr(line.find(']') + 1));
+    std::sort(ran.begin(), ran.end());
+    for (const std::string &r : ran)
+      std::printf("  ran%s\n", r.c_str());
   }
 
   // Sweep files refused before anything runs.

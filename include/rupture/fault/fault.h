@@ -135,13 +135,14 @@ namespace rupture
        */
       void
       setup(
-        const DoFHandler<dim>     &dof_handler,
-        const IndexSet            &locally_owned_dofs,
-        const IndexSet            &locally_relevant_dofs,
-        AffineConstraints<double> &constraints,
-        const std::function<double(types::material_id, const Tensor<1, dim> &)>
-                      &shear_modulus_across,
-        const MPI_Comm communicator);
+        const DoFHandler<dim>                           &dof_handler,
+        const IndexSet                                  &locally_owned_dofs,
+        const IndexSet                                  &locally_relevant_dofs,
+        AffineConstraints<double>                       &constraints,
+        const std::function<double(types::material_id,
+                                   const Tensor<1, dim> &,
+                                   const Point<dim> &)> &shear_modulus_across,
+        const MPI_Comm                                   communicator);
 
       /**
        * The interface of another DoFHandler on a mesh with the same sides

@@ -2,6 +2,7 @@
 #define rupture_material_elastic_material_h
 
 #include <rupture/material/anisotropy.h>
+#include <rupture/material/spatial_factors.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
@@ -122,6 +123,43 @@ namespace rupture
       any_anisotropic() const;
 
       /**
+       * Whether a material's constants vary in space (<Material/Stiffness
+       * factor> or <Material/Density factor> is a function): then the
+       * stiffness of material @p id at @p p is stiffness_factor() times
+       * that of get(id), and its density density_factor() times get(id)'s.
+       */
+      bool
+      varies_in_space() const
+      {
+        return factors.varies();
+      }
+
+      template <int dim>
+      double
+      stiffness_factor(const types::material_id id, const Point<dim> &p) const
+      {
+        return factors.stiffness(id, p);
+      }
+
+      template <int dim>
+      double
+      density_factor(const types::material_id id, const Point<dim> &p) const
+      {
+        return factors.density(id, p);
+      }
+
+      /**
+       * Collective: check the spatial factors on the locally owned cells
+       * of @p mesh (SpatialFactors::check()) and return the fastest phase
+       * speed of the model in @p dim dimensions, the factors included.
+       */
+      template <int dim>
+      double
+      check_on_mesh(const Triangulation<dim> &mesh,
+                    const unsigned int        degree,
+                    const MPI_Comm            communicator) const;
+
+      /**
        * The constants of material @p id. Throws a user error if the scene
        * uses a material id that has no entry.
        */
@@ -156,6 +194,7 @@ namespace rupture
 
       std::vector<ElasticConstants> materials;
       unsigned int                  dim = 3;
+      SpatialFactors                factors;
     };
   } // namespace Material
 } // namespace rupture

@@ -7,6 +7,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <functional>
+#include <utility>
 #include <vector>
 
 namespace rupture
@@ -20,14 +22,20 @@ namespace rupture
      * (isotropic or anisotropic) elasticity on the cell that @p fe_values was
      * reinit'ed on.
      * @p u extracts the side of the displacement that lives on this cell.
+     * With @p factors (constants that vary in space), the stiffness and
+     * the density at each quadrature point are multiplied by the factors
+     * it returns there (@p fe_values then needs update_quadrature_points).
      */
     template <int dim>
     inline void
-    local_elasticity_matrices(const FEValues<dim>              &fe_values,
-                              const FEValuesExtractors::Vector &u,
-                              const Material::ElasticConstants &m,
-                              FullMatrix<double>               &k,
-                              FullMatrix<double>               *mass)
+    local_elasticity_matrices(
+      const FEValues<dim>              &fe_values,
+      const FEValuesExtractors::Vector &u,
+      const Material::ElasticConstants &m,
+      FullMatrix<double>               &k,
+      FullMatrix<double>               *mass,
+      const std::function<std::pair<double, double>(const Point<dim> &)>
+        *factors = nullptr)
     {
       const unsigned int n = fe_values.dofs_per_cell;
       k                    = 0;
@@ -39,7 +47,13 @@ namespace rupture
       const SymmetricTensor<4, dim>        c = m.template stiffness<dim>();
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
-          const double JxW = fe_values.JxW(q);
+          double JxW = fe_values.JxW(q), mass_JxW = JxW;
+          if (factors)
+            {
+              const auto [s, r] = (*factors)(fe_values.quadrature_point(q));
+              JxW *= s;
+              mass_JxW *= r;
+            }
           for (unsigned int i = 0; i < n; ++i)
             {
               eps[i] = fe_values[u].symmetric_gradient(i, q);
@@ -56,7 +70,7 @@ namespace rupture
                 else
                   k(i, j) += (eps[i] * (c * eps[j])) * JxW;
                 if (mass)
-                  (*mass)(i, j) += m.density * (phi[i] * phi[j]) * JxW;
+                  (*mass)(i, j) += m.density * (phi[i] * phi[j]) * mass_JxW;
               }
         }
     }

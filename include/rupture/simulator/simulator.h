@@ -344,8 +344,11 @@ namespace rupture
     std::unique_ptr<Fault::FaultOutput<dim>> fault_output;
     std::unique_ptr<Output::Receivers<dim>>  receivers;
     Material::ElasticMaterials               materials;
-    Scene::BoundaryConditions<dim>           boundary_conditions;
-    Solver::LinearSolver                     linear_solver;
+    /// The fastest phase speed of the model on the current mesh (spatial
+    /// factors included; setup_dofs()).
+    double                         fastest_wave_speed = 0;
+    Scene::BoundaryConditions<dim> boundary_conditions;
+    Solver::LinearSolver           linear_solver;
 
     /// The mesh, the elements, the DoFs and their constraints.
     Discretization::Discretization<dim> discretization;
