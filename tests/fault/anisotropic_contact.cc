@@ -1,0 +1,200 @@
+// Anisotropic friction at one fault point (Fault::anisotropic_return_map,
+// penalty contact): the friction set is the ellipse |A^-1 tau| <= S with
+// strength factors a_1 = 1 along e_1 and a_2 = r along e_2 = n x e_1, on an
+// oblique fault plane in 3-D, with linear slip weakening (TPV3's law). A
+// block under a shear load that turns through the fault plane:
+//  - below the ellipse it sticks, also where the load exceeds the
+//    isotropic strength S (along e_2 with r = 2);
+//  - sliding, the traction lies on the ellipse, the slip increment is
+//    along the normal of the ellipse at the traction (A^-2 tau), not along
+//    the load, the slip the law sees is the dual norm |A slip|, and the
+//    dissipated work tau . slip equals S |A slip| (the paper's eq. 5.2);
+//  - the consistent tangent matches central finite differences: stick,
+//    sliding along e_1, along e_2, at an angle, near zero normal stress;
+//  - with r = 1 everything equals the isotropic return_map().
+
+#include <rupture/fault/anisotropic_contact.h>
+#include <rupture/friction/interface.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <cmath>
+#include <cstdio>
+
+using namespace dealii;
+using namespace rupture::Fault;
+
+namespace
+{
+  const char *
+  name(const ContactStatus s)
+  {
+    return s == ContactStatus::stick ?
+             "stick" :
+             (s == ContactStatus::slip ? "slip" : "open");
+  }
+
+  std::unique_ptr<rupture::Friction::Interface>
+  make_law()
+  {
+    ParameterHandler prm;
+    prm.enter_subsection("Fault");
+    rupture::Friction::declare_parameters(prm);
+    prm.set("Friction law", "linear slip weakening");
+    prm.enter_subsection("Linear slip weakening");
+    prm.set("Static friction coefficient", "0.677");
+    prm.set("Dynamic friction coefficient", "0.525");
+    prm.set("Slip-weakening distance", "0.4");
+    prm.leave_subsection();
+    auto law = rupture::Friction::create(prm);
+    prm.leave_subsection();
+    return law;
+  }
+
+  const double pn = 5e11, pt = 4e11, dt = 0.1;
+
+  Tensor<1, 3>
+  normal()
+  {
+    Tensor<1, 3> n;
+    n[0] = 1. / 3;
+    n[1] = 2. / 3;
+    n[2] = 2. / 3;
+    return n;
+  }
+
+  /// Check one load: the shear part of the initial traction has
+  /// magnitude @p shear (Pa) at angle @p angle (degrees) from e_1.
+  void
+  check(const std::string                  &title,
+        const rupture::Friction::Interface &law,
+        const double                        ratio,
+        const double                        angle,
+        const double                        shear,
+        const double                        pressure,
+        const double                        slip_path)
+  {
+    const Tensor<1, 3> n = normal();
+    FrictionEllipse<3> ellipse;
+    ellipse.direction[0]              = 2. / 3;
+    ellipse.direction[1]              = 1. / 3;
+    ellipse.direction[2]              = -2. / 3;
+    ellipse.a2                        = ratio;
+    const Tensor<1, 3> e1             = ellipse.direction;
+    const Tensor<1, 3> e2             = cross_product_3d(n, e1);
+    const double       phi            = angle * M_PI / 180;
+    const Tensor<1, 3> load_direction = std::cos(phi) * e1 + std::sin(phi) * e2;
+    const Tensor<1, 3> t0             = -pressure * n + shear * load_direction;
+    const Tensor<1, 3> delta          = 1e-5 * load_direction - 1e-7 * n;
+    rupture::Friction::State state;
+    state.slip_path = slip_path;
+    const Tensor<1, 3> old_plastic;
+    const Point<3>     x;
+
+    const auto r = anisotropic_return_map<3>(
+      delta, n, t0, pn, pt, old_plastic, state, law, x, dt, ellipse);
+
+    // The traction against the ellipse, the slip direction against the
+    // ellipse's normal and against the load.
+    const double       tn  = r.traction * n;
+    const Tensor<1, 3> tau = r.traction - tn * n;
+    const double       t1 = tau * e1, t2 = tau * e2;
+    const double       ellipse_norm = std::hypot(t1, t2 / ratio);
+    const double       strength     = r.friction * std::max(-tn, 0.);
+    const Tensor<1, 3> slip         = r.plastic_slip - old_plastic;
+    const double       s1 = slip * e1, s2 = slip * e2;
+    const double       dual_norm = std::hypot(s1, ratio * s2);
+    // The normal of the ellipse at tau: A^-2 tau = (t1, t2 / r^2).
+    const double normal_angle = std::atan2(t2 / (ratio * ratio), t1);
+    const double slip_angle   = std::atan2(s2, s1);
+    const double load_angle =
+      std::atan2((r.trial_traction * e2), (r.trial_traction * e1));
+    // Finite differences of the traction.
+    double max_error = 0, scale = 0;
+    for (unsigned int j = 0; j < 3; ++j)
+      {
+        const double h    = 1e-9;
+        Tensor<1, 3> plus = delta, minus = delta;
+        plus[j] += h;
+        minus[j] -= h;
+        const auto rp = anisotropic_return_map<3>(
+          plus, n, t0, pn, pt, old_plastic, state, law, x, dt, ellipse);
+        const auto rm = anisotropic_return_map<3>(
+          minus, n, t0, pn, pt, old_plastic, state, law, x, dt, ellipse);
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            const double fd = (rp.traction[i] - rm.traction[i]) / (2 * h);
+            max_error = std::max(max_error, std::abs(fd - r.tangent[i][j]));
+            scale     = std::max(scale, std::abs(r.tangent[i][j]));
+          }
+      }
+    std::printf("r = %g, %-32s %-5s |A^-1 tau| %8.4f MPa, strength "
+                "%8.4f MPa, |tau| %8.4f MPa\n",
+                ratio,
+                title.c_str(),
+                name(r.status),
+                ellipse_norm / 1e6,
+                strength / 1e6,
+                tau.norm() / 1e6);
+    if (r.status == ContactStatus::slip)
+      std::printf(
+        "      on the ellipse: %s; slip along its normal (1e-6 "
+        "rad): %s; angle slip-load %.2f deg; slip the law sees "
+        "= |A slip|: %s; dissipation tau.slip = S |A slip|: %s\n",
+        std::abs(ellipse_norm - strength) <= 1e-9 * strength ? "yes" : "no",
+        std::abs(std::remainder(slip_angle - normal_angle, 2 * M_PI)) < 1e-6 ?
+          "yes" :
+          "no",
+        std::abs(std::remainder(slip_angle - load_angle, 2 * M_PI)) * 180 /
+          M_PI,
+        std::abs(r.slip_increment - dual_norm) <= 1e-12 * dual_norm ? "yes" :
+                                                                      "no",
+        std::abs(tau * slip - strength * dual_norm) <=
+            1e-9 * strength * dual_norm ?
+          "yes" :
+          "no");
+    else
+      std::printf("      inside the ellipse: %s\n",
+                  ellipse_norm <= strength * (1 + 1e-12) ? "yes" : "no");
+    std::printf("      tangent matches finite differences to 1e-5: %s\n",
+                max_error <= 1e-5 * std::max(scale, 1.) ? "yes" : "no");
+
+    if (ratio == 1)
+      {
+        const auto iso =
+          return_map<3>(delta, n, t0, pn, pt, old_plastic, state, law, x, dt);
+        std::printf("      equal to the isotropic return mapping: %s\n",
+                    (iso.traction - r.traction).norm() <=
+                          1e-10 * iso.traction.norm() &&
+                        (iso.tangent - r.tangent).norm() <=
+                          1e-8 * iso.tangent.norm() &&
+                        (iso.plastic_slip - r.plastic_slip).norm() <=
+                          1e-10 * (1e-12 + iso.plastic_slip.norm()) &&
+                        iso.status == r.status ?
+                      "yes" :
+                      "no");
+      }
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto                       law = make_law();
+  // 120 MPa compression: strength 81.24 MPa at rest (mu_s = 0.677).
+  for (const double ratio : {1., 2.})
+    {
+      check("along e1, 60 MPa (below S)", *law, ratio, 0, 60e6, 120e6, 0);
+      check("along e2, 90 MPa (S < 90 < 2 S)", *law, ratio, 90, 90e6, 120e6, 0);
+      check("sliding along e1", *law, ratio, 0, 90e6, 120e6, 0);
+      check("sliding along e2", *law, ratio, 90, 180e6, 120e6, 0);
+      check("sliding at 30 degrees", *law, ratio, 30, 120e6, 120e6, 0.1);
+      check(
+        "sliding at 60 degrees, weakened", *law, ratio, 60, 150e6, 120e6, 1.0);
+      check("near zero normal stress", *law, ratio, 45, 1e6, 1e3, 0.);
+    }
+}
