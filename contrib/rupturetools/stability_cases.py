@@ -468,8 +468,11 @@ def build_cases():
     soft = constants(C11=lam + 2 * mu, C33=lam + 2 * mu, C13=lam,
                      C44=3 * mu / 100, C66=mu)
     for scheme in both:
+        # (With the axis along the fault the in-plane tensor is the same
+        # as with it across: C11 = C33, C12 = C13, and in-plane shear
+        # involves the axis either way. At 45 degrees C16, C26 appear.)
         for axis, label in (("0, 1, 0", "axis across the fault"),
-                            ("1, 0, 0", "axis along the fault")):
+                            ("1, 1, 0", "axis at 45 degrees in the plane")):
             cases.append(Case("anisotropy", "inplane", scheme,
                               "TI, c_max / c_min = 10",
                               ti + [soft, "Material/Material axes=" + axis],
@@ -600,8 +603,8 @@ FAMILIES = [
     ("anisotropy", "Anisotropic rock",
      "The in-plane base in transversely isotropic rock whose wave speeds "
      "span a factor of 10 (C44 = 0.03 mu, the other constants the "
-     "isotropic rock's), with the symmetry axis across and along the "
-     "fault; an orthotropic rock with C11 = 4 C22 and C66 = mu / 5 rotated "
+     "isotropic rock's), with the symmetry axis across the fault and at 45 "
+     "degrees to it in the model plane; an orthotropic rock with C11 = 4 C22 and C66 = mu / 5 rotated "
      "30 degrees in the model plane; and two tensors the input check must "
      "refuse: a nearly singular one (C44 = 1e-9 mu) and one whose axis "
      "leaves the model plane, which couples in-plane and out-of-plane "

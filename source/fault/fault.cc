@@ -179,6 +179,33 @@ namespace rupture
             "(t * (t - 2))) : 1)'. Must be finite.");
         }
         prm.leave_subsection();
+        prm.enter_subsection("Anisotropic friction");
+        {
+          prm.declare_entry(
+            "Strength ratio",
+            "1",
+            Patterns::Double(0.01, 100),
+            "Anisotropic friction (the review paper's section 5): the set "
+            "of admissible shear tractions is the ellipse |A^-1 tau| <= "
+            "strength with A = diag(1, r) in the directions <First "
+            "direction> (e_1, projected onto the fault) and e_2 = n x e_1: "
+            "the strength along e_2 is r times that along e_1. Slip follows "
+            "the subdifferential sliding rule (along the normal of the "
+            "ellipse at the traction, not along the traction), and the "
+            "friction law sees the slip measured as |A slip|. 1 (the "
+            "default) is isotropic friction; in 2-D the fault has one shear "
+            "direction and r has no effect. With 'penalty contact' and laws "
+            "of the slip path (slip weakening); not yet with split nodes or "
+            "rate-and-state laws.");
+          prm.declare_entry("First direction",
+                            "1, 0, 0",
+                            Patterns::Anything(),
+                            "The principal direction e_1 of the friction "
+                            "ellipse (model coordinates; its projection "
+                            "onto the fault plane is used and must not "
+                            "vanish), e.g. the strike.");
+        }
+        prm.leave_subsection();
         prm.enter_subsection("Forced slip");
         {
           prm.declare_entry(
@@ -307,6 +334,34 @@ namespace rupture
             "t");
         }
       prm.leave_subsection();
+      prm.enter_subsection("Anisotropic friction");
+      fault->friction_ellipse.a2   = prm.get_double("Strength ratio");
+      const std::string ratio_text = prm.get("Strength ratio");
+      if (dim == 3)
+        {
+          // (A 3-D vector; in 2-D the entry is not read.)
+          const Tensor<1, 3> d =
+            Utilities::parse_vector<3>(prm.get("First direction"),
+                                       "Fault/Anisotropic friction/First "
+                                       "direction");
+          for (unsigned int c = 0; c < dim; ++c)
+            fault->friction_ellipse.direction[c] = d[c];
+        }
+      else
+        fault->friction_ellipse.a2 = 1;
+      prm.leave_subsection();
+      fault->anisotropic_friction = (fault->friction_ellipse.a2 != 1);
+      AssertThrow(!fault->anisotropic_friction || !fault->split_node_method,
+                  ExcMessage("<Fault/Anisotropic friction/Strength ratio> = " +
+                             ratio_text +
+                             " needs <Fault/Model> = penalty contact: "
+                             "anisotropic friction with traction at split "
+                             "nodes is not implemented yet. Allowed: 1 with "
+                             "split nodes."));
+      AssertThrow(!fault->anisotropic_friction ||
+                    fault->friction_ellipse.direction.norm() > 0,
+                  ExcMessage("<Fault/Anisotropic friction/First direction> "
+                             "must not be the zero vector."));
       prm.enter_subsection("Forced slip");
       fault->forced_region = Utilities::parse_function<dim>(
         prm.get("Region"), 1, "Fault/Forced slip/Region", variables);
@@ -320,6 +375,19 @@ namespace rupture
                                        "Fault/Forced slip/Direction");
       prm.leave_subsection();
       fault->friction_law = Friction::create(prm);
+      AssertThrow(!fault->anisotropic_friction ||
+                    !fault->friction_law->depends_on_slip_rate(),
+                  ExcMessage("<Fault/Anisotropic friction/Strength ratio> = " +
+                             ratio_text + " with <Fault/Friction law> = " +
+                             prm.get("Friction law") +
+                             ": anisotropic friction with laws of the slip "
+                             "rate is not implemented yet. Allowed: the slip "
+                             "weakening laws, or a ratio of 1."));
+      AssertThrow(!fault->anisotropic_friction || fault->radiation_damping == 0,
+                  ExcMessage("<Fault/Anisotropic friction/Strength ratio> "
+                             "with <Fault/Radiation damping> is not "
+                             "implemented yet. Allowed: a ratio of 1, or no "
+                             "radiation damping."));
       prm.leave_subsection();
       return fault;
     }

@@ -56,6 +56,18 @@ namespace rupture
                                                    pair.tangential_penalty,
                                                    pair.plastic_slip,
                                                    imposed_slip(pair, 0));
+          else if (anisotropic_friction)
+            pair.trial = anisotropic_return_map<dim>(delta,
+                                                     pair.normal,
+                                                     pair.initial_traction,
+                                                     pair.normal_penalty,
+                                                     pair.tangential_penalty,
+                                                     pair.plastic_slip,
+                                                     pair.state,
+                                                     *friction_law,
+                                                     to_3d(pair.location),
+                                                     dt,
+                                                     friction_ellipse);
           else
             {
               // The shear traction of the step's start, for the centred

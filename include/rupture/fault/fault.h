@@ -2,6 +2,7 @@
 #define rupture_fault_fault_h
 
 #include <rupture/base/sparse_gather.h>
+#include <rupture/fault/anisotropic_contact.h>
 #include <rupture/fault/contact.h>
 #include <rupture/fault/event_source.h>
 #include <rupture/fault/node_state.h>
@@ -716,8 +717,12 @@ namespace rupture
       /// <Penalty friction time> = centred.
       bool centred_penalty = false;
       /// <Fault/Radiation damping> eta (Pa s/m) of the penalty return map.
-      double                               radiation_damping = 0;
-      bool                                 side_by_plane     = true;
+      double radiation_damping = 0;
+      /// <Fault/Anisotropic friction>: the friction set's ellipse, and
+      /// whether it is not a disc.
+      FrictionEllipse<dim>                 friction_ellipse;
+      bool                                 anisotropic_friction = false;
+      bool                                 side_by_plane        = true;
       Point<dim>                           plane_point;
       Tensor<1, dim>                       plane_normal;
       std::vector<types::material_id>      plus_materials;
