@@ -123,6 +123,24 @@ namespace rupture
 
 
 
+    std::vector<std::string>
+    split_fields(const std::string &text, const char separator)
+    {
+      std::vector<std::string> fields;
+      std::size_t              start = 0;
+      while (true)
+        {
+          const std::size_t end = text.find(separator, start);
+          fields.push_back(dealii::Utilities::trim(
+            text.substr(start, end == std::string::npos ? end : end - start)));
+          if (end == std::string::npos)
+            return fields;
+          start = end + 1;
+        }
+    }
+
+
+
     std::vector<double>
     parse_doubles(const std::string &text, const std::string &entry_name)
     {

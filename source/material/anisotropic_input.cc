@@ -23,25 +23,13 @@ namespace rupture
 
 
 
-      /// Fields separated by ';', trimmed, empty ones kept; none for a
-      /// blank text.
+      /// Fields separated by ';', empty ones kept; none for a blank text.
       std::vector<std::string>
-      split_fields(const std::string &text)
+      fields_or_none(const std::string &text)
       {
-        std::vector<std::string> fields;
         if (dealii::Utilities::trim(text).empty())
-          return fields;
-        std::size_t start = 0;
-        while (true)
-          {
-            const std::size_t end = text.find(';', start);
-            fields.push_back(dealii::Utilities::trim(text.substr(
-              start, end == std::string::npos ? end : end - start)));
-            if (end == std::string::npos)
-              break;
-            start = end + 1;
-          }
-        return fields;
+          return {};
+        return Utilities::split_fields(text);
       }
 
 
@@ -52,7 +40,7 @@ namespace rupture
                    const std::string &text,
                    const unsigned int n)
       {
-        std::vector<std::string> fields = split_fields(text);
+        std::vector<std::string> fields = fields_or_none(text);
         AssertThrow(fields.size() <= 1 || fields.size() == n,
                     ExcMessage("The entry <Material/" + entry + "> has " +
                                std::to_string(fields.size()) +
@@ -259,7 +247,7 @@ namespace rupture
       for (const char *entry : {"Stiffness", "Material axes"})
         {
           const bool shared =
-            (n > 1 && split_fields(prm.get(entry)).size() == 1);
+            (n > 1 && fields_or_none(prm.get(entry)).size() == 1);
           const std::vector<std::string> &fields =
             (std::string(entry) == "Stiffness" ? entries.stiffness :
                                                  entries.axes);

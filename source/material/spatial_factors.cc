@@ -16,26 +16,6 @@ namespace rupture
   {
     namespace
     {
-      /// Fields separated by ';', trimmed (a blank text is one empty field).
-      std::vector<std::string>
-      fields_of(const std::string &text)
-      {
-        std::vector<std::string> fields;
-        std::size_t              start = 0;
-        while (true)
-          {
-            const std::size_t end = text.find(';', start);
-            fields.push_back(dealii::Utilities::trim(text.substr(
-              start, end == std::string::npos ? end : end - start)));
-            if (end == std::string::npos)
-              break;
-            start = end + 1;
-          }
-        return fields;
-      }
-
-
-
       /// The text as a number, if it is one.
       bool
       as_number(const std::string &text, double &value)
@@ -70,7 +50,8 @@ namespace rupture
       const unsigned int n = names.size();
       for (const std::string entry : {"Stiffness factor", "Density factor"})
         {
-          std::vector<std::string> fields = fields_of(prm.get(entry));
+          std::vector<std::string> fields =
+            Utilities::split_fields(prm.get(entry));
           AssertThrow(fields.size() == 1 || fields.size() == n,
                       ExcMessage("The entry <Material/" + entry + "> has " +
                                  std::to_string(fields.size()) +

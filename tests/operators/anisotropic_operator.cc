@@ -1,7 +1,7 @@
 // Anisotropic materials in the stiffness operators. (1) The matrix-free
 // operator (Operators::ElasticOperator, its per-batch stiffness tensors)
 // against the element matrices of Operators::local_elasticity_matrices
-// assembled as C^T K C: 2-D and 3-D, Q1 to Q3, a rotated transversely
+// assembled as C^T K C: 2-D (Q1 to Q3) and 3-D (Q1, Q2), a rotated transversely
 // isotropic material beside an isotropic one, general hexahedra, hanging
 // nodes and the fault's hp split. (2) The isotropic limit: isotropic
 // constants given as a general tensor give the isotropic operator to
@@ -275,10 +275,13 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // (Degree 3 in 2-D only: the 3-D assembly at degree 3 takes 40 s in a
+  // Debug build.)
   for (const unsigned int degree : {1u, 2u, 3u})
     {
       check_operator<2>(degree);
-      check_operator<3>(degree);
+      if (degree < 3)
+        check_operator<3>(degree);
     }
   for (const unsigned int degree : {1u, 2u, 3u})
     {

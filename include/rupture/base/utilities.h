@@ -64,6 +64,14 @@ namespace rupture
     split_list(const std::string &text, const char separator = ',');
 
     /**
+     * Split @p text at every @p separator into trimmed fields, empty ones
+     * kept (one per material in "a; ; b"); a blank text is one empty
+     * field.
+     */
+    std::vector<std::string>
+    split_fields(const std::string &text, const char separator = ';');
+
+    /**
      * Parse a list of doubles. The message names @p entry_name on error.
      */
     std::vector<double>
