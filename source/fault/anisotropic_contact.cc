@@ -111,6 +111,9 @@ namespace rupture
       double       tau[2], N0;
       double       dS = 0, mu = 0;
       const double S0 = law.strength(x, old_state, 0., dt, pressure, dS, mu);
+      // Weakening at the start of the slip steeper than the penalty: the
+      // traction drops to the residual strength at once (snap-back).
+      const bool snaps = (-dS >= p_t);
       state_of(0., tau, N0);
       if (N0 <= S0 * (1 + 1e-10))
         {
@@ -192,7 +195,7 @@ namespace rupture
       if (!(S > 0) || !(N > 0))
         {
           // No strength left: the shear traction stays zero.
-          r.unstable_softening = (-dS >= p_t);
+          r.unstable_softening = snaps || (-dS >= p_t);
           return r;
         }
       const double   S_l = dS, S_p = mu;
@@ -209,18 +212,21 @@ namespace rupture
           w_Minv_dtrial += w[i] * Minv[i] * p_t * e[i];
         }
       const double denominator = S_l + wm * alpha;
-      r.unstable_softening     = !(denominator > 0);
+      const bool   steep       = !(denominator > 0);
+      r.unstable_softening     = steep || snaps;
       // dl / ddelta (dp / ddelta = -p_n n).
-      // (Weakening steeper than the penalty: the slope is left out, as in
-      // return_map(), which keeps the tangent's sliding part positive.)
-      const Tensor<1, dim> dl =
-        (w_Minv_dtrial + (wm * beta + S_p) * p_n * n) /
-        (r.unstable_softening ? wm * p_t / S : denominator);
+      // (Weakening steeper than the penalty: the slope S_l is left out
+      // throughout, as return_map() does, which keeps the tangent's
+      // sliding part from softening; with a ratio of 1 this is
+      // return_map()'s tangent.)
+      const double         alpha_used = steep ? p_t / S : alpha;
+      const Tensor<1, dim> dl = (w_Minv_dtrial + (wm * beta + S_p) * p_n * n) /
+                                (steep ? wm * alpha_used : denominator);
       for (unsigned int i = 0; i < nt; ++i)
         {
           // dtau_i / ddelta
           const Tensor<1, dim> dtau =
-            Minv[i] * p_t * e[i] - m[i] * (alpha * dl - beta * p_n * n);
+            Minv[i] * p_t * e[i] - m[i] * (alpha_used * dl - beta * p_n * n);
           r.tangent += outer_product(e[i], dtau);
         }
       return r;

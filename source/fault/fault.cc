@@ -519,6 +519,23 @@ namespace rupture
               pair.normal /= pair.area;
               pair.shear_modulus =
                 shear_modulus_across(pair.material, pair.normal, pair.location);
+              if (anisotropic_friction)
+                {
+                  const Tensor<1, dim> &d = friction_ellipse.direction;
+                  std::ostringstream    where;
+                  where << pair.location;
+                  AssertThrow((d - (d * pair.normal) * pair.normal).norm() >
+                                1e-6 * d.norm(),
+                              ExcMessage(
+                                "<Fault/Anisotropic friction/First direction> "
+                                "is normal to the fault at (" +
+                                where.str() +
+                                "): its projection onto the fault plane, "
+                                "the friction ellipse's first axis, "
+                                "vanishes. Allowed: a direction that lies "
+                                "in the fault plane or across it at an "
+                                "angle (e.g. the strike)."));
+                }
               pair.hanging = hanging.is_constrained(pair.minus[0]);
               {
                 std::ostringstream where;

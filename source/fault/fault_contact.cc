@@ -252,9 +252,14 @@ namespace rupture
           // traction (at TPV3's penalties faster than 1 mm/s, well ahead of
           // the rupture), so there it is the rate of the frictional
           // (plastic) slip; the split nodes have no elastic part.
-          const double rate = split_node_method ?
-                                updated.slip_rate :
-                                pair.trial.slip_increment / dt;
+          // (The Euclidean length of the plastic slip increment: with
+          // anisotropic friction slip_increment is the dual norm |A slip|.)
+          const double rate =
+            split_node_method ?
+              updated.slip_rate :
+              (anisotropic_friction ?
+                 (pair.trial.plastic_slip - pair.plastic_slip).norm() / dt :
+                 pair.trial.slip_increment / dt);
           if (pair.rupture_time == NodeState<dim>::not_ruptured && rate > 1e-3)
             {
               const double w = (1e-3 - pair.rupture_rate) /

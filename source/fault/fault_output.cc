@@ -499,6 +499,26 @@ namespace rupture
       scalar_field("slip_rate",
                    [](const R &r) { return r.slip_velocity.norm(); });
       scalar_field("slip_path", [](const R &r) { return r.slip_path; });
+      // The slip's direction in the fault plane (degrees from strike,
+      // positive up-dip: the rake of Aki and Richards; in 2-D 0 or 180),
+      // and the angle between the slip rate and the shear traction
+      // (degrees; 0 for isotropic friction, where slip follows the
+      // traction; anisotropic friction turns the slip towards the weaker
+      // direction). Both 0 where there is no slip (rate).
+      scalar_field("rake", [this](const R &r) {
+        const double h = strike_component(r.slip), v = dip_component(r.slip);
+        return (h == 0 && v == 0) ? 0. : std::atan2(-v, h) * 180 / numbers::PI;
+      });
+      scalar_field("slip_traction_angle", [](const R &r) {
+        const Tensor<1, dim> shear =
+          r.traction - (r.traction * r.normal) * r.normal;
+        const double norms = shear.norm() * r.slip_velocity.norm();
+        if (!(norms > 0))
+          return 0.;
+        return std::acos(
+                 std::clamp((shear * r.slip_velocity) / norms, -1., 1.)) *
+               180 / numbers::PI;
+      });
       scalar_field("friction_coefficient",
                    [](const R &r) { return r.friction; });
       scalar_field("normal_traction",

@@ -36,7 +36,7 @@ namespace
   }
 
   std::unique_ptr<rupture::Friction::Interface>
-  make_law()
+  make_law(const std::string &weakening_distance = "0.4")
   {
     ParameterHandler prm;
     prm.enter_subsection("Fault");
@@ -45,7 +45,7 @@ namespace
     prm.enter_subsection("Linear slip weakening");
     prm.set("Static friction coefficient", "0.677");
     prm.set("Dynamic friction coefficient", "0.525");
-    prm.set("Slip-weakening distance", "0.4");
+    prm.set("Slip-weakening distance", weakening_distance);
     prm.leave_subsection();
     auto law = rupture::Friction::create(prm);
     prm.leave_subsection();
@@ -196,5 +196,54 @@ main(int argc, char **argv)
       check(
         "sliding at 60 degrees, weakened", *law, ratio, 60, 150e6, 120e6, 1.0);
       check("near zero normal stress", *law, ratio, 45, 1e6, 1e3, 0.);
+    }
+
+  // Weakening steeper than the tangential penalty (L_d = 0.01 mm: slope
+  // 1.8e12 Pa/m against p_t = 4e11), a load along e_1: the traction snaps
+  // to the residual strength, the flag says so, and the tangent leaves
+  // the slope out as return_map() does (so it is not the finite-difference
+  // one there). With r = 1 traction and tangent equal return_map()'s; with
+  // r = 2 the traction does (the load is along e_1, where the ellipse
+  // meets the circle), the tangent not (its part across e_1 follows the
+  // ellipse's curvature).
+  const auto steep = make_law("1e-5");
+  for (const double ratio : {1., 2.})
+    {
+      const Tensor<1, 3> n = normal();
+      FrictionEllipse<3> ellipse;
+      ellipse.direction[0]           = 2. / 3;
+      ellipse.direction[1]           = 1. / 3;
+      ellipse.direction[2]           = -2. / 3;
+      ellipse.a2                     = ratio;
+      const Tensor<1, 3>       t0    = -120e6 * n + 90e6 * ellipse.direction;
+      const Tensor<1, 3>       delta = 3e-5 * ellipse.direction;
+      rupture::Friction::State state;
+      const auto               r   = anisotropic_return_map<3>(delta,
+                                               n,
+                                               t0,
+                                               pn,
+                                               pt,
+                                               Tensor<1, 3>(),
+                                               state,
+                                               *steep,
+                                               Point<3>(),
+                                               dt,
+                                               ellipse);
+      const auto               iso = return_map<3>(
+        delta, n, t0, pn, pt, Tensor<1, 3>(), state, *steep, Point<3>(), dt);
+      std::printf("r = %g, steep weakening: %s, unstable softening flagged: "
+                  "%s, traction equal to the isotropic return mapping's: "
+                  "%s, tangent: %s\n",
+                  ratio,
+                  name(r.status),
+                  r.unstable_softening ? "yes" : "no",
+                  (iso.traction - r.traction).norm() <=
+                      1e-10 * iso.traction.norm() ?
+                    "yes" :
+                    "no",
+                  (iso.tangent - r.tangent).norm() <=
+                      1e-8 * iso.tangent.norm() ?
+                    "equal" :
+                    "different");
     }
 }
