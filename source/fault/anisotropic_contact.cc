@@ -40,6 +40,22 @@ namespace rupture
 
 
     template <int dim>
+    Tensor<1, dim>
+    inverse_metric(const FrictionEllipse<dim> &ellipse,
+                   const Tensor<1, dim>       &n,
+                   const Tensor<1, dim>       &v)
+    {
+      const auto     e    = principal_directions(ellipse, n);
+      const double   a[2] = {ellipse.a1, ellipse.a2};
+      Tensor<1, dim> result;
+      for (unsigned int i = 0; i + 1 < dim; ++i)
+        result += (v * e[i]) / a[i] * e[i];
+      return result;
+    }
+
+
+
+    template <int dim>
     ContactResponse<dim>
     anisotropic_return_map(const Tensor<1, dim>       &delta,
                            const Tensor<1, dim>       &n,
@@ -234,6 +250,14 @@ namespace rupture
 
 
 
+    template Tensor<1, 2>
+    inverse_metric(const FrictionEllipse<2> &,
+                   const Tensor<1, 2> &,
+                   const Tensor<1, 2> &);
+    template Tensor<1, 3>
+    inverse_metric(const FrictionEllipse<3> &,
+                   const Tensor<1, 3> &,
+                   const Tensor<1, 3> &);
     template ContactResponse<2>
     anisotropic_return_map(const Tensor<1, 2> &,
                            const Tensor<1, 2> &,

@@ -136,14 +136,21 @@ namespace rupture
           Tensor<1, dim>        step;
           for (unsigned int c = 0; c < dim; ++c)
             step[c] = increment(pair.plus[c]) - increment(pair.minus[c]);
-          const Tensor<1, dim>  step_t = step - (step * n) * n;
-          const Tensor<1, dim> &T      = pair.trial.trial_traction;
-          const Tensor<1, dim>  D      = pair.tangential_penalty * step_t;
-          const double          D2     = D * D;
+          const Tensor<1, dim> step_t = step - (step * n) * n;
+          // (With anisotropic friction in the coordinates A^-1 tau, where
+          // the stick region is the disc of radius S, as it is otherwise.)
+          const auto scaled = [&](const Tensor<1, dim> &v) {
+            return anisotropic_friction ?
+                     inverse_metric(friction_ellipse, n, v) :
+                     v;
+          };
+          const Tensor<1, dim> T  = scaled(pair.trial.trial_traction);
+          const Tensor<1, dim> D  = scaled(pair.tangential_penalty * step_t);
+          const double         D2 = D * D;
           if (D2 == 0)
             continue;
           const Tensor<1, dim> &traction = pair.trial.traction;
-          const double strength = (traction - (traction * n) * n).norm();
+          const double strength = scaled(traction - (traction * n) * n).norm();
           // The update's closest approach to zero traction, and whether it
           // lies in the stick region while the full update ends in slip.
           const double s_min   = std::min(std::max(-(T * D) / D2, 0.), 1.);

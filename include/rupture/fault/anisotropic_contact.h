@@ -34,6 +34,17 @@ namespace rupture
     };
 
     /**
+     * A^-1 @p v for the tangential part of @p v in the plane of normal
+     * @p n (its normal part dropped): the coordinates in which the
+     * ellipse of @p ellipse is the disc of radius S.
+     */
+    template <int dim>
+    Tensor<1, dim>
+    inverse_metric(const FrictionEllipse<dim> &ellipse,
+                   const Tensor<1, dim>       &n,
+                   const Tensor<1, dim>       &v);
+
+    /**
      * Penalty contact with anisotropic friction at one fault point: the
      * return mapping of return_map() for the set K of @p ellipse. The
      * elastic trial traction is returned to K by the closest-point
