@@ -330,6 +330,19 @@ namespace rupture
 
 
 
+    std::array<double, 2>
+    in_plane_phase_speeds(const VoigtMatrix  &c,
+                          const double        density,
+                          const Tensor<1, 3> &n)
+    {
+      const SymmetricTensor<2, 3> g    = christoffel_matrix(c, n);
+      const double                mean = 0.5 * (g[0][0] + g[1][1]);
+      const double half = std::hypot(0.5 * (g[0][0] - g[1][1]), g[0][1]);
+      return {{speed(mean + half, density), speed(mean - half, density)}};
+    }
+
+
+
     bool
     model_plane_is_mirror_plane(const VoigtMatrix &c)
     {
@@ -367,18 +380,16 @@ namespace rupture
     {
       // In 2-D only the in-plane block of Gamma (polarisations in the
       // model plane) carries waves.
-      const auto block = [&c](const Tensor<1, 3> &n) {
-        const SymmetricTensor<2, 3> g = christoffel_matrix(c, n);
-        if (dim == 3)
-          return eigenvalues_ascending(g);
-        const double mean = 0.5 * (g[0][0] + g[1][1]);
-        const double half = std::hypot(0.5 * (g[0][0] - g[1][1]), g[0][1]);
-        return std::array<double, 3>{{mean - half, mean - half, mean + half}};
-      };
-      const auto slow = extremes_over_directions<dim>(
-        [&](const Tensor<1, 3> &n) { return speed(block(n)[0], density); });
-      const auto fast = extremes_over_directions<dim>(
-        [&](const Tensor<1, 3> &n) { return speed(block(n)[2], density); });
+      const auto slow =
+        extremes_over_directions<dim>([&](const Tensor<1, 3> &n) {
+          return dim == 3 ? phase_speeds(c, density, n)[2] :
+                            in_plane_phase_speeds(c, density, n)[1];
+        });
+      const auto fast =
+        extremes_over_directions<dim>([&](const Tensor<1, 3> &n) {
+          return dim == 3 ? phase_speeds(c, density, n)[0] :
+                            in_plane_phase_speeds(c, density, n)[0];
+        });
       return {slow.first, fast.second};
     }
 

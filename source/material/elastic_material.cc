@@ -586,13 +586,10 @@ namespace rupture
                   if (dim == 2)
                     {
                       // In-plane polarisations only.
-                      const SymmetricTensor<2, 3> g =
-                        christoffel_matrix(m.voigt, n);
-                      const double mean = 0.5 * (g[0][0] + g[1][1]);
-                      const double half =
-                        std::hypot(0.5 * (g[0][0] - g[1][1]), g[0][1]);
-                      v[0] = std::sqrt(std::max(mean + half, 0.) / m.density);
-                      v[1] = std::sqrt(std::max(mean - half, 0.) / m.density);
+                      const auto w =
+                        in_plane_phase_speeds(m.voigt, m.density, n);
+                      v[0] = w[0];
+                      v[1] = w[1];
                     }
                   out << " along "
                       << "xyz"[d] << ": " << v[0] << ", " << v[1];

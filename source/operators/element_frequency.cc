@@ -297,9 +297,9 @@ namespace rupture
       // other). Each shape takes the largest such ratio of its cells.
       const bool varying = materials.varies_in_space();
       std::map<std::vector<std::int64_t>, double> shape_ratio;
+      const MappingQ1<dim>                        mapping;
       const auto cell_ratio = [&](const auto &cell) {
-        const MappingQ1<dim> mapping;
-        double               s_max = 0, r_min = 1e300;
+        double s_max = 0, r_min = 1e300;
         for (const Quadrature<dim> *q :
              {&q_cells[0], static_cast<const Quadrature<dim> *>(&q_lumped[0])})
           for (const Point<dim> &xi : q->get_points())

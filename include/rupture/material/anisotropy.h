@@ -91,6 +91,17 @@ namespace rupture
                  const Tensor<1, 3> &n);
 
     /**
+     * The two phase speeds (descending) of the waves polarised in the
+     * model plane x3 = 0 that travel along @p n (in that plane): those of
+     * the plane's 2 x 2 block of the Christoffel matrix, which are the 2-D
+     * model's waves.
+     */
+    std::array<double, 2>
+    in_plane_phase_speeds(const VoigtMatrix  &c,
+                          const double        density,
+                          const Tensor<1, 3> &n);
+
+    /**
      * Whether the plane x3 = 0 (the model plane of 2-D runs) is a plane
      * of mirror symmetry, in the sense that in-plane strains cause no
      * out-of-plane shear stress (C_I4 = C_I5 = 0 for I = 1, 2, 6, to
