@@ -193,6 +193,27 @@ namespace tests
     s << in.rdbuf();
     return s.str();
   }
+
+  /**
+   * The values of the DataArray named @p name of the ASCII VTK file text
+   * @p vtu (in file order; empty if there is none).
+   */
+  inline std::vector<double>
+  vtu_field(const std::string &vtu, const std::string &name)
+  {
+    const std::string   tag = "Name=\"" + name + "\"";
+    std::vector<double> values;
+    const auto          at = vtu.find(tag);
+    if (at == std::string::npos)
+      return values;
+    const auto         start = vtu.find('>', at) + 1;
+    std::istringstream in(
+      vtu.substr(start, vtu.find("</DataArray>", at) - start));
+    double v;
+    while (in >> v)
+      values.push_back(v);
+    return values;
+  }
 } // namespace tests
 
 #endif

@@ -131,6 +131,60 @@ subsection Fault
 end
 """
 
+PATCH3D_PRM = """\
+# A 3-D miniature of TPV3 (as tests/fault/split_node_3d.prm and
+# penalty_rupture_3d.prm): a vertical fault |x| <= 2 km, |z| <= 1.5 km in
+# the plane y = 0, TPV3 material and friction, 500 m cells, absorbing
+# boundaries all round; the prestress points 30 degrees from strike (x)
+# towards -z, 70 MPa (81.6 MPa in the patch |x|, |z| <= 750 m) at 120 MPa
+# compression.
+set Dimension = 3
+set Test mode = false
+set Output directory = output
+subsection Scene
+  set Model = box
+  subsection Box
+    set Lower corner = -3000, -1500, -3000
+    set Upper corner = 3000, 1500, 3000
+    set Number of cells = 12, 6, 12
+  end
+end
+subsection Material
+  set Density = 2670
+  set P-wave speed = 6000
+  set S-wave speed = 3464
+end
+subsection Fault
+  set Model = penalty contact
+  set Plane point = 0, 0, 0
+  set Plane normal = 0, 1, 0
+  set Fault region = (abs(x) <= 2000 && abs(z) <= 1500) ? 1 : 0
+  set Normal penalty = 6.4e9
+  set Tangential penalty = 6.4e9
+  set Initial traction = ((abs(x) <= 750 && abs(z) <= 750) ? 81.6e6 : 70e6) * 0.8660254; -120e6; -((abs(x) <= 750 && abs(z) <= 750) ? 81.6e6 : 70e6) * 0.5
+  subsection Linear slip weakening
+    set Static friction coefficient = 0.677
+    set Dynamic friction coefficient = 0.525
+    set Slip-weakening distance = 0.05
+  end
+end
+subsection Boundary conditions
+  set Absorbing = west, east, south, north, bottom, top
+end
+subsection Time integration
+  set Scheme = implicit Newmark
+  set Time step = 0.02
+  set End time = 1.2
+end
+subsection Solver
+  set Linear solver = direct
+end
+subsection Output
+  set Output interval = -1
+  set Screen output interval = 1
+end
+"""
+
 # Properties of the bases that the case matrix and the analytic solution use.
 BASES = {
     "column": dict(prm=COLUMN_PRM, rho=1.0, cs=1.0, cp=2.0, h=0.05,
@@ -142,6 +196,9 @@ BASES = {
     "inplane": dict(prm=INPLANE_PRM, rho=2670.0, cs=3464.0, cp=6000.0,
                     h=15000.0 / 24, end=3.0, dt=0.02, mu_s=0.677,
                     mu_d=0.525, dc=0.4, tau0=70e6, sigma=120e6, penalty=5e11),
+    "patch3d": dict(prm=PATCH3D_PRM, rho=2670.0, cs=3464.0, cp=6000.0,
+                    h=500.0, end=1.2, dt=0.02, mu_s=0.677, mu_d=0.525,
+                    dc=0.05, tau0=70e6, sigma=120e6, penalty=6.4e9),
 }
 for _b in BASES.values():
     # Elastic stiffness of a fault-adjacent element: shear modulus / cell size.
@@ -494,6 +551,37 @@ def build_cases():
                       ti + [soft, "Material/Material axes=1, 0, 1"],
                       name="axis out of the model plane"))
 
+    # 12. Anisotropic friction (issue 39) on the 3-D patch, both schemes:
+    # friction ellipses of aspect ratio 1/20 to 20 (the strength along
+    # e_2 = n x e_1 = -z is r times that along e_1 = x), the prestress at
+    # 30 degrees from strike scaled so that its ellipse norm |A^-1 tau| is
+    # the isotropic run's; and inputs the check must refuse: a ratio
+    # outside [0.01, 100] and a first direction normal to the fault.
+    for ratio in (0.05, 0.1, 0.5, 1, 2, 10, 20):
+        scale = 1 / math.sqrt(0.75 + 0.25 / ratio ** 2)
+        traction = ("((abs(x) <= 750 && abs(z) <= 750) ? 81.6e6 : 70e6) * "
+                    "%.12g; -120e6; -((abs(x) <= 750 && abs(z) <= 750) ? "
+                    "81.6e6 : 70e6) * %.12g" % (0.8660254 * scale,
+                                                 0.5 * scale))
+        for scheme in both:
+            cases.append(Case("anisotropic friction", "patch3d", scheme,
+                              "r = %g" % ratio,
+                              ["Fault/Anisotropic friction/Strength ratio=%r"
+                               % ratio,
+                               "Fault/Anisotropic friction/First direction="
+                               "1, 0, 0",
+                               "Fault/Initial traction=" + traction],
+                              name="|A^-1 tau_0| = 70 MPa"))
+    cases.append(Case("anisotropic friction", "patch3d", "explicit",
+                      "r = 200", ["Fault/Anisotropic friction/Strength "
+                                  "ratio=200"],
+                      name="outside [0.01, 100]"))
+    cases.append(Case("anisotropic friction", "patch3d", "implicit",
+                      "e_1 normal to the fault",
+                      ["Fault/Anisotropic friction/Strength ratio=2",
+                       "Fault/Anisotropic friction/First direction=0, 1, 0"],
+                      name="First direction = n"))
+
     # The in-plane explicit base, as a cheap check of the second base in --quick.
     for c in cases:
         if (c.family, c.base, c.scheme, c.value) == ("material contrast", "inplane", "explicit", "C = 1"):
@@ -609,6 +697,15 @@ FAMILIES = [
      "refuse: a nearly singular one (C44 = 1e-9 mu) and one whose axis "
      "leaves the model plane, which couples in-plane and out-of-plane "
      "motion."),
+    ("anisotropic friction", "Anisotropic friction",
+     "A 3-D miniature of TPV3 (500 m cells, the fault 4 x 3 km, the "
+     "prestress 30 degrees from strike) with friction ellipses of aspect "
+     "ratio r from 1/20 to 20 (the strength along dip r times that along "
+     "strike), the prestress scaled so that its ellipse norm |A^-1 tau_0| "
+     "stays 70 MPa (81.6 MPa in the patch); implicit Newmark with penalty "
+     "contact and the explicit scheme with split nodes. A ratio outside "
+     "[0.01, 100] and a first direction normal to the fault must be "
+     "refused."),
 ]
 
 

@@ -78,3 +78,25 @@ def test_balance_off_is_reported(tmp_path):
     stability_runs.analyse(case, r, str(run))
     assert r["dt_stable"] == 0.02
     assert r["result"] == "ran, balance off"
+
+
+def test_anisotropic_friction_cases_keep_the_ellipse_norm():
+    """The prestress of the anisotropic friction family is scaled so that
+    its ellipse norm |A^-1 tau| (strike component, dip component / r) is
+    the isotropic 70 MPa for every ratio r, in both schemes."""
+    import re
+    cases = [c for c in stability_cases.build_cases()
+             if c.family == "anisotropic friction" and c.base == "patch3d"]
+    ratios = set()
+    for c in cases:
+        sets = dict(s.split("=", 1) for s in c.sets)
+        if "Fault/Initial traction" not in sets:
+            continue
+        r = float(sets["Fault/Anisotropic friction/Strength ratio"])
+        factors = [float(f) for f in re.findall(r"\* ([0-9.e+-]+)", sets["Fault/Initial traction"])]
+        strike, dip = factors
+        assert abs((strike ** 2 + (dip / r) ** 2) ** 0.5 - 1) < 1e-8
+        ratios.add((r, c.scheme))
+    assert {r for r, _ in ratios} == {0.05, 0.1, 0.5, 1, 2, 10, 20}
+    assert {s for _, s in ratios} == {"implicit", "explicit"}
+    assert "patch3d" in stability_cases.BASES

@@ -83,9 +83,15 @@ namespace rupture
                              number(settings.growth) +
                              ", but it must be > 1 and at most 2."));
       AssertThrow(std::isfinite(settings.shear_modulus) &&
-                    settings.shear_modulus > 0,
+                    settings.shear_modulus > 0 &&
+                    std::isfinite(settings.vertical_shear_modulus) &&
+                    settings.vertical_shear_modulus >= 0,
                   ExcMessage("The shear modulus (density times the S-wave "
                              "speed squared, <Material>) must be > 0."));
+      const double C55 = settings.shear_modulus,
+                   C44 = (settings.vertical_shear_modulus > 0) ?
+                           settings.vertical_shear_modulus :
+                           settings.shear_modulus;
       const double fault_cells =
         std::ceil(W / (p * settings.node_spacing) - 1e-9);
       AssertThrow(fault_cells * p <= 20000,
@@ -185,9 +191,11 @@ namespace rupture
             for (unsigned int q = 0; q < quadrature.size(); ++q)
               for (unsigned int a = 0; a < n; ++a)
                 for (unsigned int b = 0; b < n; ++b)
-                  local(a, b) += settings.shear_modulus *
-                                 values.shape_grad(a, q) *
-                                 values.shape_grad(b, q) * values.JxW(q);
+                  local(a, b) += (C55 * values.shape_grad(a, q)[0] *
+                                    values.shape_grad(b, q)[0] +
+                                  C44 * values.shape_grad(a, q)[1] *
+                                    values.shape_grad(b, q)[1]) *
+                                 values.JxW(q);
             cell->get_dof_indices(indices);
             A.add(indices, local);
             for (const unsigned int f : cell->face_indices())

@@ -17,10 +17,12 @@ namespace rupture
   {
     AntiplaneHalfSpace::AntiplaneHalfSpace(const double depth,
                                            const double element_size,
-                                           const double shear_modulus)
+                                           const double shear_modulus,
+                                           const double moment_modulus)
       : n(0)
       , h(0)
       , mu(shear_modulus)
+      , moment_mu(moment_modulus > 0 ? moment_modulus : shear_modulus)
     {
       using dealii::ExcMessage;
       AssertThrow(std::isfinite(depth) && depth > 0,

@@ -5,6 +5,7 @@
 #include <rupture/boundary_integral/simulation.h>
 #include <rupture/boundary_integral/stiffness.h>
 #include <rupture/boundary_integral/text.h>
+#include <rupture/material/anisotropic_input.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -218,6 +219,60 @@ namespace rupture
 
 
 
+    void
+    Settings::read_anisotropic_moduli(ParameterHandler &prm)
+    {
+      // An anisotropic first material: the antiplane problem's moduli in
+      // the model's frame (x across the fault, y up, the motion along z):
+      // sigma_xz = C55 u,x + C45 u,y, sigma_yz = C45 u,x + C44 u,y. The
+      // motion along z stays apart from the in-plane motion only where the
+      // model plane is a plane of mirror symmetry, and the fault and the
+      // free surface keep their right angle under the map to an isotropic
+      // body only where C45 = 0.
+      const std::vector<std::string> names =
+        Utilities::split_list(prm.get("Names"));
+      const Material::AnisotropicEntries entries =
+        Material::read_anisotropic_entries(prm, names);
+      for (const std::string entry : {"Stiffness factor", "Density factor"})
+        for (const std::string &field : Utilities::split_fields(prm.get(entry)))
+          AssertThrow(dealii::Utilities::trim(field).empty() ||
+                        dealii::Utilities::trim(field) == "1",
+                      ExcMessage("<Material/" + entry +
+                                 "> = " + prm.get(entry) +
+                                 ": the boundary-integral method needs a "
+                                 "homogeneous body (its stiffness comes "
+                                 "from one material). Allowed: 1."));
+      if (entries.symmetry.empty() ||
+          entries.symmetry[0] == Material::Symmetry::isotropic)
+        return;
+      const std::string           which = " of material 0 (" + names[0] + ")";
+      const Material::VoigtMatrix c =
+        Material::anisotropic_stiffness(entries, 0, which);
+      AssertThrow(Material::model_plane_is_mirror_plane(c),
+                  ExcMessage("Material" + which.substr(12) +
+                             " is anisotropic, and in the model's frame "
+                             "(after <Material/Material axes>) its tensor "
+                             "couples the antiplane motion (along z) to the "
+                             "in-plane one: the antiplane problem of the "
+                             "boundary-integral method needs the plane z = "
+                             "0 to be a plane of mirror symmetry (C14 = C15 "
+                             "= C24 = C25 = C46 = C56 = 0). Allowed: axes "
+                             "that keep it one."));
+      const double C44 = c[3][3], C55 = c[4][4], C45 = c[3][4];
+      AssertThrow(std::abs(C45) <= 1e-9 * std::max(C44, C55),
+                  ExcMessage("Material" + which.substr(12) +
+                             " has C45 = " + number(C45) +
+                             " Pa in the model's frame: its antiplane shear "
+                             "is oblique to the fault and the free surface, "
+                             "which the boundary-integral method's half-space "
+                             "cannot take. Allowed: material axes with C45 = "
+                             "0 (a symmetry axis along x, y or z)."));
+      shear_modulus          = C55;
+      vertical_shear_modulus = C44;
+    }
+
+
+
     Settings::Settings(ParameterHandler &prm)
     {
       test_mode        = prm.get_bool("Test mode");
@@ -232,6 +287,8 @@ namespace rupture
         shear_modulus =
           first_material_value(prm, "Young's modulus") /
           (2 * (1 + first_material_value(prm, "Poisson's ratio")));
+      vertical_shear_modulus = shear_modulus;
+      read_anisotropic_moduli(prm);
       prm.leave_subsection();
 
       // The friction law, the damping and the fault's outputs.

@@ -70,17 +70,24 @@ namespace rupture
         if (settings.stiffness == "finite elements")
           {
             AntiplaneFiniteElements::Settings fe;
-            fe.fault_depth   = settings.fault_depth;
-            fe.node_spacing  = settings.element_size;
-            fe.degree        = settings.fe_degree;
-            fe.domain_size   = settings.domain_size;
-            fe.growth        = settings.cell_growth;
-            fe.shear_modulus = settings.shear_modulus;
+            fe.fault_depth            = settings.fault_depth;
+            fe.node_spacing           = settings.element_size;
+            fe.degree                 = settings.fe_degree;
+            fe.domain_size            = settings.domain_size;
+            fe.growth                 = settings.cell_growth;
+            fe.shear_modulus          = settings.shear_modulus;
+            fe.vertical_shear_modulus = settings.vertical_shear_modulus;
             return std::make_unique<AntiplaneFiniteElements>(fe, communicator);
           }
-        return std::make_unique<AntiplaneHalfSpace>(settings.fault_depth,
-                                                    settings.element_size,
-                                                    settings.shear_modulus);
+        // (An anisotropic body with C45 = 0 is the isotropic one of modulus
+        // sqrt(C44 C55) with depths stretched by sqrt(C55 / C44): the
+        // kernel, homogeneous of degree -1 in the depths, is the isotropic
+        // one of that modulus; moments take C55.)
+        return std::make_unique<AntiplaneHalfSpace>(
+          settings.fault_depth,
+          settings.element_size,
+          std::sqrt(settings.shear_modulus * settings.vertical_shear_modulus),
+          settings.shear_modulus);
       }
     } // namespace
 
@@ -168,6 +175,17 @@ namespace rupture
                           "method): ")
                     << geometry.description()
                     << ", mu = " << settings.shear_modulus
+                    << (settings.vertical_shear_modulus !=
+                            settings.shear_modulus ?
+                          " Pa (C55; C44 = " +
+                            dealii::Utilities::to_string(
+                              settings.vertical_shear_modulus) +
+                            " Pa, sqrt(C44 C55) = " +
+                            dealii::Utilities::to_string(
+                              std::sqrt(settings.shear_modulus *
+                                        settings.vertical_shear_modulus)) +
+                            ")" :
+                          std::string())
                     << " Pa, eta = " << eta
                     << " Pa s/m, V_p = " << settings.plate_rate << " m/s; "
                     << dealii::Utilities::MPI::n_mpi_processes(communicator)

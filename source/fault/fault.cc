@@ -194,9 +194,9 @@ namespace rupture
             "ellipse at the traction, not along the traction), and the "
             "friction law sees the slip measured as |A slip|. 1 (the "
             "default) is isotropic friction; in 2-D the fault has one shear "
-            "direction and r has no effect. With 'penalty contact' and laws "
-            "of the slip path (slip weakening); not yet with split nodes or "
-            "rate-and-state laws.");
+            "direction and r has no effect. Every fault model and friction "
+            "law; a law of the slip rate sees the slip rate |A V|, and "
+            "radiation damping acts on the slip rate as a vector.");
           prm.declare_entry("First direction",
                             "1, 0, 0",
                             Patterns::Anything(),
@@ -351,13 +351,6 @@ namespace rupture
         fault->friction_ellipse.a2 = 1;
       prm.leave_subsection();
       fault->anisotropic_friction = (fault->friction_ellipse.a2 != 1);
-      AssertThrow(!fault->anisotropic_friction || !fault->split_node_method,
-                  ExcMessage("<Fault/Anisotropic friction/Strength ratio> = " +
-                             ratio_text +
-                             " needs <Fault/Model> = penalty contact: "
-                             "anisotropic friction with traction at split "
-                             "nodes is not implemented yet. Allowed: 1 with "
-                             "split nodes."));
       AssertThrow(!fault->anisotropic_friction ||
                     fault->friction_ellipse.direction.norm() > 0,
                   ExcMessage("<Fault/Anisotropic friction/First direction> "
@@ -375,19 +368,6 @@ namespace rupture
                                        "Fault/Forced slip/Direction");
       prm.leave_subsection();
       fault->friction_law = Friction::create(prm);
-      AssertThrow(!fault->anisotropic_friction ||
-                    !fault->friction_law->depends_on_slip_rate(),
-                  ExcMessage("<Fault/Anisotropic friction/Strength ratio> = " +
-                             ratio_text + " with <Fault/Friction law> = " +
-                             prm.get("Friction law") +
-                             ": anisotropic friction with laws of the slip "
-                             "rate is not implemented yet. Allowed: the slip "
-                             "weakening laws, or a ratio of 1."));
-      AssertThrow(!fault->anisotropic_friction || fault->radiation_damping == 0,
-                  ExcMessage("<Fault/Anisotropic friction/Strength ratio> "
-                             "with <Fault/Radiation damping> is not "
-                             "implemented yet. Allowed: a ratio of 1, or no "
-                             "radiation damping."));
       prm.leave_subsection();
       return fault;
     }
@@ -633,8 +613,11 @@ namespace rupture
                 }
               {
                 const double tn = pair.initial_traction * pair.normal;
+                // (With anisotropic friction the ratio's shear is measured
+                // against the ellipse, |A^-1 tau_0|.)
                 const double ts =
-                  (pair.initial_traction - tn * pair.normal).norm();
+                  traction_measure(pair,
+                                   pair.initial_traction - tn * pair.normal);
                 friction_law->initialize_state(
                   x,
                   (tn < 0) ? ts / (-tn) :

@@ -56,18 +56,6 @@ namespace rupture
                                                    pair.tangential_penalty,
                                                    pair.plastic_slip,
                                                    imposed_slip(pair, 0));
-          else if (anisotropic_friction)
-            pair.trial = anisotropic_return_map<dim>(delta,
-                                                     pair.normal,
-                                                     pair.initial_traction,
-                                                     pair.normal_penalty,
-                                                     pair.tangential_penalty,
-                                                     pair.plastic_slip,
-                                                     pair.state,
-                                                     *friction_law,
-                                                     to_3d(pair.location),
-                                                     dt,
-                                                     friction_ellipse);
           else
             {
               // The shear traction of the step's start, for the centred
@@ -79,19 +67,35 @@ namespace rupture
                   pair.initial_traction -
                   (pair.initial_traction * pair.normal) * pair.normal +
                   pair.tangential_penalty * (pair.slip - pair.plastic_slip);
+              const Tensor<1, dim> *const old =
+                centred_penalty ? &old_shear : nullptr;
               pair.trial =
-                return_map<dim>(delta,
-                                pair.normal,
-                                pair.initial_traction,
-                                pair.normal_penalty,
-                                pair.tangential_penalty,
-                                pair.plastic_slip,
-                                pair.state,
-                                *friction_law,
-                                to_3d(pair.location),
-                                dt,
-                                radiation_damping,
-                                centred_penalty ? &old_shear : nullptr);
+                anisotropic_friction ?
+                  anisotropic_return_map<dim>(delta,
+                                              pair.normal,
+                                              pair.initial_traction,
+                                              pair.normal_penalty,
+                                              pair.tangential_penalty,
+                                              pair.plastic_slip,
+                                              pair.state,
+                                              *friction_law,
+                                              to_3d(pair.location),
+                                              dt,
+                                              friction_ellipse,
+                                              radiation_damping,
+                                              old) :
+                  return_map<dim>(delta,
+                                  pair.normal,
+                                  pair.initial_traction,
+                                  pair.normal_penalty,
+                                  pair.tangential_penalty,
+                                  pair.plastic_slip,
+                                  pair.state,
+                                  *friction_law,
+                                  to_3d(pair.location),
+                                  dt,
+                                  radiation_damping,
+                                  old);
             }
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;
           contact_blocks.blocks[&pair - pairs.data()] =
@@ -232,6 +236,17 @@ namespace rupture
           const Tensor<1, dim> t =
             pair.trial.traction -
             (pair.trial.traction * pair.normal) * pair.normal;
+          // The traction the law's heating and the dissipation see: with
+          // anisotropic friction the one conjugate to the slip's dual norm,
+          // (t . du) / |A du| (|A^-1 t| on the ellipse), so that it times
+          // the law's slip is the work t . du (the review paper's eq. 5.2).
+          double traction_size = t.norm();
+          if (anisotropic_friction)
+            {
+              const double l = slip_measure(pair, pair.trial.sliding);
+              traction_size  = (l > 0) ? (t * pair.trial.sliding) / l :
+                                         traction_measure(pair, t);
+            }
           Friction::State updated;
           if (split_node_method && centred_split_node &&
               friction_law->depends_on_slip_rate())
@@ -247,7 +262,7 @@ namespace rupture
                                          pair.state,
                                          pair.trial.slip_increment,
                                          dt,
-                                         t.norm(),
+                                         traction_size,
                                          updated);
               pair.slip_velocity = (pair.trial_slip - pair.slip) / dt;
             }
@@ -275,7 +290,8 @@ namespace rupture
                 time - dynamic_start - dt + std::clamp(w, 0., 1.) * dt;
             }
           pair.rupture_rate = rate;
-          frictional_energy += pair.area * t.norm() * pair.trial.slip_increment;
+          frictional_energy +=
+            pair.area * traction_size * pair.trial.slip_increment;
           pair.state        = updated;
           pair.plastic_slip = pair.trial.plastic_slip;
           pair.slip         = pair.trial_slip;

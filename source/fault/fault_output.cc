@@ -313,6 +313,16 @@ namespace rupture
 
     template <int dim>
     double
+    FaultOutput<dim>::rake_of(const Tensor<1, dim> &v) const
+    {
+      const double h = strike_component(v), d = dip_component(v);
+      return (h == 0 && d == 0) ? 0. : std::atan2(-d, h) * 180 / numbers::PI;
+    }
+
+
+
+    template <int dim>
+    double
     FaultOutput<dim>::down_dip_distance(const Point<dim> &x) const
     {
       if (dim != 3)
@@ -375,7 +385,7 @@ namespace rupture
         by_key[r.key] = &r;
       for (auto &s : stations)
         {
-          Tensor<1, dim>      slip, rate, traction;
+          Tensor<1, dim>      slip, rate, traction, sliding, n;
           double              normal = 0;
           std::vector<double> state;
           for (unsigned int k = 0; k < s.nodes.size(); ++k)
@@ -384,6 +394,8 @@ namespace rupture
               slip += s.weights[k] * r.slip;
               rate += s.weights[k] * r.slip_velocity;
               traction += s.weights[k] * r.traction;
+              sliding += s.weights[k] * r.sliding;
+              n += s.weights[k] * r.normal;
               normal += s.weights[k] * (r.traction * r.normal);
               state.resize(r.state_values.size());
               for (unsigned int i = 0; i < state.size(); ++i)
@@ -402,6 +414,24 @@ namespace rupture
             {
               row.push_back(normal / 1e6);
               row.insert(row.end(), state.begin(), state.end());
+            }
+          // With anisotropic friction in 3-D, the directions (rake_of())
+          // of the slip, of the frictional slip rate and of the shear
+          // traction, and the angle between the last two (write_tables()
+          // puts them into a file of their own).
+          if (dim == 3 && fault.has_anisotropic_friction())
+            {
+              n /= n.norm();
+              const Tensor<1, dim> shear = traction - (traction * n) * n;
+              const double         norms = sliding.norm() * shear.norm();
+              row.push_back(rake_of(slip));
+              row.push_back(rake_of(sliding));
+              row.push_back(rake_of(shear));
+              row.push_back(
+                (norms > 0) ?
+                  std::acos(std::clamp((sliding * shear) / norms, -1., 1.)) *
+                    180 / numbers::PI :
+                  0.);
             }
           s.rows.append(row);
         }
@@ -505,10 +535,7 @@ namespace rupture
       // (degrees; 0 for isotropic friction, where slip follows the
       // traction; anisotropic friction turns the slip towards the weaker
       // direction). Both 0 where there is no slip (rate).
-      scalar_field("rake", [this](const R &r) {
-        const double h = strike_component(r.slip), v = dip_component(r.slip);
-        return (h == 0 && v == 0) ? 0. : std::atan2(-v, h) * 180 / numbers::PI;
-      });
+      scalar_field("rake", [this](const R &r) { return rake_of(r.slip); });
       scalar_field("slip_traction_angle", [](const R &r) {
         const Tensor<1, dim> shear =
           r.traction - (r.traction * r.normal) * r.normal;
@@ -519,6 +546,11 @@ namespace rupture
                  std::clamp((shear * r.slip_velocity) / norms, -1., 1.)) *
                180 / numbers::PI;
       });
+      // With anisotropic friction, the frictional slip rate of the step
+      // (along the ellipse's normal at the traction: the sliding rule).
+      if (fault.has_anisotropic_friction())
+        vector_field("frictional_slip_rate",
+                     [](const R &r) { return r.sliding; });
       scalar_field("friction_coefficient",
                    [](const R &r) { return r.friction; });
       scalar_field("normal_traction",
@@ -584,12 +616,44 @@ namespace rupture
           std::vector<double> times;
           std::ostringstream  body;
           body << std::scientific << std::setprecision(7);
+          // (The SCEC columns; those after them, with anisotropic
+          // friction, go to <name>-rake.dat.)
+          const std::vector<std::string> state_names =
+            fault.friction().state_names();
+          const unsigned int n_scec =
+            7 + (state_names.empty() ? 0 : 1 + state_names.size());
+          std::ostringstream rake;
+          rake << std::scientific << std::setprecision(7);
           s.rows.for_each([&](const std::vector<double> &row) {
             times.push_back(row[0]);
-            for (unsigned int c = 0; c < row.size(); ++c)
+            for (unsigned int c = 0; c < row.size() && c < n_scec; ++c)
               body << (c ? " " : "") << row[c];
             body << "\n";
+            if (row.size() > n_scec)
+              {
+                rake << row[0];
+                for (unsigned int c = n_scec; c < row.size(); ++c)
+                  rake << " " << row[c];
+                rake << "\n";
+              }
           });
+          if (!rake.str().empty())
+            directory.write(
+              s.name + "-rake.dat",
+              "# problem = rupture station directions (anisotropic "
+              "friction)\n# location = " +
+                std::to_string(strike_component(r) / 1e3) +
+                " km along strike, " +
+                std::to_string(down_dip_distance(s.location) / 1e3) +
+                " km down-dip\n# Directions in degrees from the "
+                "along-strike direction, positive up-dip (0 where the "
+                "vector vanishes)\n# Column #1 = Time (s)\n# Column #2 = "
+                "rake of the slip\n# Column #3 = direction of the "
+                "frictional slip rate\n# Column #4 = direction of the shear "
+                "traction\n# Column #5 = angle between the frictional slip "
+                "rate and the shear traction\nt rake slip-rate-direction "
+                "traction-direction slip-traction-angle\n" +
+                rake.str());
           out << "# code = rupture\n# code_version = 0.1\n"
               << Output::time_step_lines(times, time_step)
               << "# num_time_steps = " << s.rows.size() << "\n"
@@ -605,8 +669,6 @@ namespace rupture
               << "# Column #7 = vertical shear stress (MPa)\n";
           // The SCEC rate-and-state format adds the normal stress and the
           // state (log10 theta as "log-theta", or psi).
-          const std::vector<std::string> state_names =
-            fault.friction().state_names();
           std::string header =
             "t h-slip h-slip-rate h-shear-stress v-slip v-slip-rate "
             "v-shear-stress";

@@ -39,7 +39,7 @@ namespace rupture
       // 2^53) and the ranks' arrays are gathered with one MPI_Gatherv: a
       // serialised, compressed gather took most of an output's time.
       const unsigned int  n_state = friction_law->state_names().size();
-      const unsigned int  stride  = 5 + 5 * dim + n_state;
+      const unsigned int  stride  = 5 + 6 * dim + n_state;
       std::vector<double> mine;
       for (const auto &pair : pairs)
         if (!keys || keys->count(pair.minus[0]))
@@ -54,6 +54,7 @@ namespace rupture
             add(pair.slip - pair.slip_at_start);
             add(pair.slip_velocity);
             add(pair.trial.traction);
+            add(pair.trial.sliding);
             mine.push_back(pair.state.slip_path);
             mine.push_back(pair.trial.friction);
             mine.push_back(pair.rupture_time);
@@ -100,6 +101,7 @@ namespace rupture
           get(r.slip);
           get(r.slip_velocity);
           get(r.traction);
+          get(r.sliding);
           r.slip_path    = *v++;
           r.friction     = *v++;
           r.rupture_time = *v++;
@@ -569,6 +571,8 @@ namespace rupture
           // (Added with the event catalogue: older checkpoints end here.)
           NodeState<dim>::append(v, pair.event_slip);
           v.push_back(pair.event_peak_rate);
+          // (Added with anisotropic friction's output.)
+          NodeState<dim>::append(v, t.sliding);
           BinaryIO::write(out, v);
         }
     }
@@ -660,6 +664,8 @@ namespace rupture
               pair.event_slip      = NodeState<dim>::take(v, i);
               pair.event_peak_rate = v.at(i++);
             }
+          if (i + dim <= v.size())
+            t.sliding = NodeState<dim>::take(v, i);
         }
     }
 

@@ -118,17 +118,17 @@ namespace rupture
 
 
       /**
-       * The magnitude of the shear part of a pair's traction of the last
-       * step (its initial traction before the first step).
+       * The shear part of a pair's traction of the last step (its initial
+       * traction before the first step).
        */
       template <class Pair>
-      double
-      previous_shear_traction(const Pair &pair)
+      auto
+      previous_shear(const Pair &pair)
       {
         const auto &T = (pair.trial.traction.norm() > 0) ?
                           pair.trial.traction :
                           pair.initial_traction;
-        return (T - (T * pair.normal) * pair.normal).norm();
+        return T - (T * pair.normal) * pair.normal;
       }
     } // namespace
 
@@ -173,10 +173,10 @@ namespace rupture
               acceleration[d] = rs[p] * ms[p] - rs[m] * ms[m];
               inverse_sum[d]  = ms[p] + ms[m];
             }
-          const Tensor<1, dim> &n         = pair.normal;
-          const double          gap       = du * n;
-          const Tensor<1, dim>  slip      = du - gap * n;
-          const double          increment = (slip - pair.slip).norm();
+          const Tensor<1, dim> &n    = pair.normal;
+          const double          gap  = du * n;
+          const Tensor<1, dim>  slip = du - gap * n;
+          const double increment     = slip_measure(pair, slip - pair.slip);
 
           ContactResponse<dim> r;
           r.slip_increment = increment;
@@ -208,7 +208,8 @@ namespace rupture
                                          pair.state,
                                          increment,
                                          dt,
-                                         previous_shear_traction(pair),
+                                         traction_measure(pair,
+                                                          previous_shear(pair)),
                                          pair.trial_state);
               pair.trial_slip_velocity = (slip - pair.slip) / dt;
             }
@@ -236,6 +237,9 @@ namespace rupture
           else if (forced)
             r.status =
               (increment > 0) ? ContactStatus::slip : ContactStatus::stick;
+          else if (anisotropic_friction)
+            T = anisotropic_split_traction(
+              pair, x, T, tn, inverse_sum, c, dt, slip, centred, r);
           else if (centred)
             T = centred_rate_traction(
               pair, x, T, tn, inverse_sum, c, dt, slip, r);
@@ -310,10 +314,10 @@ namespace rupture
                              friction_law->cohesion(to_3d(pair.location),
                                                     pair.state),
                            0.);
-                r.status =
-                  (T - tn * pair.normal).norm() >= (1 - 1e-6) * strength ?
-                    ContactStatus::slip :
-                    ContactStatus::stick;
+                r.status = traction_measure(pair, T - tn * pair.normal) >=
+                               (1 - 1e-6) * strength ?
+                             ContactStatus::slip :
+                             ContactStatus::stick;
               }
             r.traction = T;
           }
@@ -449,7 +453,7 @@ namespace rupture
                                      pair.state,
                                      (slip - pair.slip).norm(),
                                      dt,
-                                     0.5 * (previous_shear_traction(pair) +
+                                     0.5 * (previous_shear(pair).norm() +
                                             (s - Z * W)),
                                      pair.trial_state);
           solve();
@@ -460,6 +464,152 @@ namespace rupture
       r.status = (W > 0) ? ContactStatus::slip : ContactStatus::stick;
       pair.trial_slip_velocity = 0.5 * (before + W * e);
       return tn * pair.normal + (s - Z * W) * e;
+    }
+
+
+
+    template <int dim>
+    Tensor<1, dim>
+    Fault<dim>::anisotropic_split_traction(NodePair             &pair,
+                                           const Point<3>       &x,
+                                           const Tensor<1, dim> &stick_traction,
+                                           const double          tn,
+                                           const Tensor<1, dim> &inverse_sum,
+                                           const double          c,
+                                           const double          dt,
+                                           const Tensor<1, dim> &slip,
+                                           const bool            centred,
+                                           ContactResponse<dim> &r) const
+    {
+      // The traction tau = tau_stick - Z W lets the pair slip at the rate
+      // W over the next step (Z the impedance along the stick traction's
+      // shear, as rate_dependent_traction() has it), and the sliding rule
+      // puts W along the ellipse's normal at tau: the projection of
+      // tau_stick onto the ellipse in the stiffness k = Z / dt, with the
+      // slip l = |A W| dt the law sees (project_onto_ellipse()). A law of
+      // the slip rate meets its strength at the step's end, or centred
+      // (centred_rate_traction()) at the time of the traction: at the rate
+      // V_k = (b + |A W|) / 2, with b the dual rate of the step before
+      // along the sliding direction at the stick traction, (before . s) /
+      // |A^-1 s| (before . e with a disc), and the state evolved up to
+      // then.
+      const EllipseFrame<dim>   frame(friction_ellipse, pair.normal);
+      const ShearImpedance<dim> shear(
+        stick_traction, tn, pair.normal, inverse_sum, c * dt * pair.area);
+      const Tensor<1, dim> s = stick_traction - tn * pair.normal;
+      const double         Z = shear.impedance, p = -tn;
+      const bool           rate      = friction_law->depends_on_slip_rate();
+      const double         k         = (Z > 0) ? Z / dt : 1.;
+      const Tensor<1, dim> before    = (slip - pair.slip) / dt;
+      const double         s_measure = frame.strength_norm(s);
+      const double b_before = (s_measure > 0) ? (before * s) / s_measure : 0.;
+      const Friction::State &state = centred ? pair.trial_state : pair.state;
+      double                 mu = r.friction, dS_dl = 0;
+      const StrengthOfSlip   strength =
+        [&](const double l, double &dl, double &dp) -> double {
+        if (!rate)
+          {
+            dl = 0;
+            dp = r.friction;
+            return std::max(r.friction * p + friction_law->cohesion(x, state),
+                            0.);
+          }
+        if (!centred)
+          return friction_law->strength(x, state, l, dt, p, dl, dp);
+        const double V  = 0.5 * (b_before + l / dt);
+        double       dV = 0;
+        const double S =
+          friction_law->strength_at_rate(x, state, std::max(V, 0.), p, dV, dp);
+        dl = (V > 0) ? 0.5 * dV / dt : 0.;
+        return S;
+      };
+      Tensor<1, dim> tau   = s, du;
+      double         l     = 0;
+      const auto     solve = [&]() {
+        double       dp = 0;
+        const double S0 = strength(0., dS_dl, dp);
+        mu              = rate ? dp : r.friction;
+        tau             = s;
+        du              = 0;
+        l               = 0;
+        if (!(s_measure > S0) || (rate && Z == 0))
+          return;
+        const double b_min = std::min(frame.b[0], frame.b[dim - 2]);
+        if (rate)
+          friction_law->check_uniqueness(x,
+                                         state,
+                                         p,
+                                         (centred ? 2 : 1) * Z * b_min);
+        const EllipseProjection projection =
+          project_onto_ellipse(frame, s, k, strength);
+        tau = frame.vector(projection.tau);
+        du  = (Z > 0) ? (s - tau) / k : Tensor<1, dim>();
+        l   = (Z > 0) ? projection.l : 0.;
+        strength(l, dS_dl, dp);
+        if (rate)
+          {
+            mu = dp;
+            // The root is unique only where the strength falls slower
+            // with l than the projection's stiffness.
+            check_falling(projection.slope < 0 ? -1. : -Z * b_min - dS_dl * dt,
+                          Z * b_min,
+                          l / dt,
+                          pair.location);
+          }
+      };
+      solve();
+      if (centred && rate && friction_law->state_depends_on_traction())
+        {
+          // The heating of the step before with the mean of its two
+          // tractions (their measure against the strength), then the
+          // traction again.
+          friction_law->update_state(x,
+                                     pair.state,
+                                     frame.dual_norm(slip - pair.slip),
+                                     dt,
+                                     0.5 * (frame.strength_norm(
+                                              previous_shear(pair)) +
+                                            frame.strength_norm(tau)),
+                                     pair.trial_state);
+          solve();
+        }
+      r.friction = mu;
+      if (rate)
+        {
+          r.friction_derivative = (p > 0) ? dS_dl / p : 0.;
+          r.slip_increment      = l;
+        }
+      r.sliding = du / dt;
+      r.status  = (du.norm() > 0 || (!rate && tau != s)) ? ContactStatus::slip :
+                                                           ContactStatus::stick;
+      if (centred)
+        pair.trial_slip_velocity = 0.5 * (before + du / dt);
+      return tn * pair.normal + tau;
+    }
+
+
+
+    template <int dim>
+    double
+    Fault<dim>::slip_measure(const NodePair       &pair,
+                             const Tensor<1, dim> &v) const
+    {
+      return anisotropic_friction ?
+               EllipseFrame<dim>(friction_ellipse, pair.normal).dual_norm(v) :
+               v.norm();
+    }
+
+
+
+    template <int dim>
+    double
+    Fault<dim>::traction_measure(const NodePair       &pair,
+                                 const Tensor<1, dim> &t) const
+    {
+      return anisotropic_friction ?
+               EllipseFrame<dim>(friction_ellipse, pair.normal)
+                 .strength_norm(t) :
+               t.norm();
     }
 
 

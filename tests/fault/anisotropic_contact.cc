@@ -11,7 +11,14 @@
 //    dissipated work tau . slip equals S |A slip| (the paper's eq. 5.2);
 //  - the consistent tangent matches central finite differences: stick,
 //    sliding along e_1, along e_2, at an angle, near zero normal stress;
-//  - with r = 1 everything equals the isotropic return_map().
+//  - with r = 1 everything equals the isotropic return_map();
+//  - a rate-and-state law with radiation damping eta, met at the step's
+//    end and centred (the implicit midpoint rule): the friction's part of
+//    the traction (less eta du / dt; of the step's mean traction when
+//    centred) lies on the ellipse of the strength at the slip l = |A du|
+//    (at half of it over half the step when centred), du along the
+//    ellipse's normal there, the tangent matches finite differences, and
+//    with r = 1 it equals return_map() with the same damping.
 
 #include <rupture/fault/anisotropic_contact.h>
 #include <rupture/friction/interface.h>
@@ -176,6 +183,136 @@ namespace
                       "no");
       }
   }
+
+  std::unique_ptr<rupture::Friction::Interface>
+  make_rate_law()
+  {
+    ParameterHandler prm;
+    prm.enter_subsection("Fault");
+    rupture::Friction::declare_parameters(prm);
+    prm.set("Friction law", "rate and state");
+    prm.enter_subsection("Rate and state");
+    prm.set("Formulation", "regularized");
+    prm.set("Evolution law", "aging");
+    prm.set("Direct effect", "0.016");
+    prm.set("Evolution effect", "0.012");
+    prm.set("Characteristic slip distance", "0.02");
+    prm.set("Reference friction coefficient", "0.6");
+    prm.set("Reference slip rate", "1e-6");
+    prm.set("Initial slip rate", "1e-9");
+    prm.leave_subsection();
+    auto law = rupture::Friction::create(prm);
+    prm.leave_subsection();
+    return law;
+  }
+
+  /// A rate-and-state point with radiation damping @p eta, loaded at
+  /// @p angle degrees from e_1, centred or not.
+  void
+  check_rate(const rupture::Friction::Interface &law,
+             const double                        ratio,
+             const double                        angle,
+             const bool                          centred)
+  {
+    const double       eta = 5e6, step = 0.01;
+    const Tensor<1, 3> n = normal();
+    FrictionEllipse<3> ellipse;
+    ellipse.direction[0]     = 2. / 3;
+    ellipse.direction[1]     = 1. / 3;
+    ellipse.direction[2]     = -2. / 3;
+    ellipse.a2               = ratio;
+    const Tensor<1, 3> e1    = ellipse.direction;
+    const Tensor<1, 3> e2    = cross_product_3d(n, e1);
+    const double       phi   = angle * M_PI / 180;
+    const Tensor<1, 3> load  = std::cos(phi) * e1 + std::sin(phi) * e2;
+    const double       p     = 50e6;
+    const Tensor<1, 3> t0    = -p * n + 20e6 * load;
+    const Tensor<1, 3> delta = 1e-4 * load;
+    // The shear at the step's start: along the load (so that r = 1 can be
+    // compared with return_map(), which takes its part along the trial).
+    const Tensor<1, 3>        old_shear = 25e6 * load;
+    const Tensor<1, 3> *const old       = centred ? &old_shear : nullptr;
+    rupture::Friction::State  state;
+    const Point<3>            x;
+    law.initialize_state(x, 0.6, state);
+    const Tensor<1, 3> old_plastic;
+    const auto         map = [&](const Tensor<1, 3> &d) {
+      return anisotropic_return_map<3>(
+        d, n, t0, pn, pt, old_plastic, state, law, x, step, ellipse, eta, old);
+    };
+    const auto         r   = map(delta);
+    const Tensor<1, 3> du  = r.plastic_slip - old_plastic;
+    const Tensor<1, 3> tau = r.traction - (r.traction * n) * n;
+    // The friction's part of the (mean) traction, and the strength.
+    const Tensor<1, 3> friction =
+      (centred ? 0.5 * (old_shear + tau) : tau) - eta * du / step;
+    const double l = std::hypot(du * e1, ratio * (du * e2));
+    double       dS, dp;
+    const double S  = centred ?
+                        law.strength(x, state, 0.5 * l, 0.5 * step, p, dS, dp) :
+                        law.strength(x, state, l, step, p, dS, dp);
+    const double f1 = friction * e1, f2 = friction * e2;
+    const double normal_angle = std::atan2(f2 / (ratio * ratio), f1);
+    const double slip_angle   = std::atan2(du * e2, du * e1);
+    double       max_error = 0, scale = 0;
+    for (unsigned int j = 0; j < 3; ++j)
+      {
+        const double h    = 1e-10;
+        Tensor<1, 3> plus = delta, minus = delta;
+        plus[j] += h;
+        minus[j] -= h;
+        const auto rp = map(plus), rm = map(minus);
+        for (unsigned int i = 0; i < 3; ++i)
+          {
+            const double fd = (rp.traction[i] - rm.traction[i]) / (2 * h);
+            max_error = std::max(max_error, std::abs(fd - r.tangent[i][j]));
+            scale     = std::max(scale, std::abs(r.tangent[i][j]));
+          }
+      }
+    std::printf("r = %g, rate and state, eta %g, %s, load at %g deg: %s at "
+                "%.3e m/s; friction's traction on the ellipse of S(l): %s; "
+                "slip along its normal (1e-6 rad): %s; tangent matches "
+                "finite differences to 1e-5: %s\n",
+                ratio,
+                eta,
+                centred ? "centred" : "step's end",
+                angle,
+                name(r.status),
+                l / step,
+                std::abs(std::hypot(f1, f2 / ratio) - S) <= 1e-9 * S ? "yes" :
+                                                                       "no",
+                std::abs(std::remainder(slip_angle - normal_angle, 2 * M_PI)) <
+                    1e-6 ?
+                  "yes" :
+                  "no",
+                max_error <= 1e-5 * std::max(scale, 1.) ? "yes" : "no");
+    if (ratio == 1)
+      {
+        const auto iso = return_map<3>(
+          delta, n, t0, pn, pt, old_plastic, state, law, x, step, eta, old);
+        // (Centred, the tangents differ across the load: return_map()
+        // takes the old traction's part along the trial, which turns with
+        // it, the ellipse's midpoint rule the old traction as it is.)
+        const double tangent_difference =
+          (iso.tangent - r.tangent).norm() / iso.tangent.norm();
+        std::printf(
+          "      equal to the isotropic return mapping (traction, "
+          "slip, friction and its slope): %s; tangents differ by "
+          "%s\n",
+          (iso.traction - r.traction).norm() <= 1e-10 * iso.traction.norm() &&
+              (iso.plastic_slip - r.plastic_slip).norm() <=
+                1e-10 * iso.plastic_slip.norm() &&
+              std::abs(iso.friction - r.friction) <= 1e-12 * iso.friction &&
+              std::abs(iso.friction_derivative - r.friction_derivative) <=
+                1e-8 * std::abs(iso.friction_derivative) &&
+              iso.status == r.status ?
+            "yes" :
+            "no",
+          tangent_difference <= 1e-8 ?
+            "less than 1e-8" :
+            (tangent_difference < 0.01 ? "0.1 to 1 %" : "more"));
+      }
+  }
 } // namespace
 
 
@@ -246,4 +383,10 @@ main(int argc, char **argv)
                     "equal" :
                     "different");
     }
+
+  const auto rate_law = make_rate_law();
+  for (const double ratio : {1., 2.})
+    for (const bool centred : {false, true})
+      for (const double angle : {0., 40.})
+        check_rate(*rate_law, ratio, angle, centred);
 }

@@ -5,7 +5,8 @@
 // traction (rake about 30 degrees at every node that slipped more than
 // 10 cm); with the friction ellipse twice as strong along dip (ratio 2)
 // the slip turns towards strike, along the ellipse's normal at a traction
-// 30 degrees from strike, atan(tan(30) / 4) = 8.2 degrees.
+// 30 degrees from strike, atan(tan(30) / 4) = 8.2 degrees. With r = 2 the
+// centre station's directions file follows the sliding rule too.
 
 #include <deal.II/base/mpi.h>
 
@@ -17,25 +18,6 @@
 #include <string>
 #include <vector>
 
-namespace
-{
-  std::vector<double>
-  field(const std::string &vtu, const std::string &name)
-  {
-    const std::string   tag = "Name=\"" + name + "\"";
-    std::vector<double> values;
-    const auto          at = vtu.find(tag);
-    if (at == std::string::npos)
-      return values;
-    const auto         start = vtu.find('>', at) + 1;
-    std::istringstream in(
-      vtu.substr(start, vtu.find("</DataArray>", at) - start));
-    double v;
-    while (in >> v)
-      values.push_back(v);
-    return values;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -51,8 +33,8 @@ main(int argc, char **argv)
                     {"Fault/Anisotropic friction/Strength ratio=" + ratio,
                      "Fault/Output/Output interval=1.2"});
       const std::string vtu  = tests::read_file(out + "/fault/fault_00060.vtu");
-      const auto        rake = field(vtu, "rake");
-      const auto        slip = field(vtu, "slip");
+      const auto        rake = tests::vtu_field(vtu, "rake");
+      const auto        slip = tests::vtu_field(vtu, "slip");
       double            low = 1e300, high = -1e300;
       unsigned int      n = 0;
       for (unsigned int i = 0; i < rake.size() && 3 * i + 2 < slip.size(); ++i)
@@ -73,5 +55,39 @@ main(int argc, char **argv)
                   ratio == "1" ? "25-35 (the prestress at 30)" :
                                  "5-12 (the ellipse's normal, 8.2)",
                   expected ? "yes" : "no");
+      // The station directions (<name>-rake.dat: t, rake of the slip,
+      // direction of the frictional slip rate, direction of the shear
+      // traction, angle between the two), written with anisotropic
+      // friction only. Where the centre slides, the slip rate's direction
+      // is the ellipse's normal at the traction: its dip component scaled
+      // by 1 / r^2 (e_2 lies along dip).
+      const std::string directions = out + "/center-rake.dat";
+      if (ratio == "1")
+        {
+          std::printf("strength ratio 1: no station directions file: %s\n",
+                      tests::file_exists(directions) ? "no" : "yes");
+          continue;
+        }
+      const auto   rows    = tests::read_statistics(directions);
+      unsigned int sliding = 0;
+      double       worst   = 0;
+      for (const auto &row : rows)
+        if (row.size() == 5 && row[2] != 0)
+          {
+            const double t = row[3] * M_PI / 180;
+            const double normal =
+              std::atan2(std::sin(t) / 4, std::cos(t)) * 180 / M_PI;
+            worst =
+              std::max(worst, std::abs(std::remainder(row[2] - normal, 360.)));
+            ++sliding;
+          }
+      std::printf("strength ratio 2, centre station: %s rows, sliding in more "
+                  "than 5: %s, frictional slip rate within 1 degree of the "
+                  "ellipse's normal at the station's traction: %s, final "
+                  "rake %.0f degrees\n",
+                  rows.size() == 61 ? "61" : "not 61",
+                  sliding > 5 ? "yes" : "no",
+                  worst <= 1 ? "yes" : "no",
+                  rows.empty() ? 0. : rows.back()[1]);
     }
 }

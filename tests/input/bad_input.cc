@@ -104,11 +104,12 @@ main(int argc, char **argv)
                "500\nend\n");
   write("density_factor.prm",
         base + "subsection Material\n  set Density factor = -2\nend\n");
-  write("anisotropic_friction_split.prm",
-        base + "set Dimension = 3\nsubsection Fault\n  set Model = traction "
-               "at split nodes\n  set Plane point = 0, 500, 0\n  set Plane "
+  write("anisotropic_friction_normal.prm",
+        base + "set Dimension = 3\nsubsection Fault\n  set Model = penalty "
+               "contact\n  set Plane point = 0, 500, 0\n  set Plane "
                "normal = 0, 1, 0\n  subsection Anisotropic friction\n    set "
-               "Strength ratio = 2\n  end\nend\n");
+               "Strength ratio = 2\n    set First direction = 0, 2, 0\n  "
+               "end\nend\n");
   write("anisotropic_2d.prm",
         base + "subsection Material\n  set Symmetry = transversely "
                "isotropic\n  set Stiffness = C11 = 6e10, C33 = 4e10, C13 = "
@@ -231,8 +232,8 @@ main(int argc, char **argv)
   check("function with an unknown variable", {"function.prm"});
   check("stiffness factor not positive on the cells", {"stiffness_factor.prm"});
   check("negative density factor", {"density_factor.prm"});
-  check("anisotropic friction with split nodes",
-        {"anisotropic_friction_split.prm"});
+  check("anisotropic friction direction normal to the fault",
+        {"anisotropic_friction_normal.prm"});
   check("2-D anisotropic material without a mirror plane",
         {"anisotropic_2d.prm"});
   check("fault plane that cuts through cells", {"fault_plane.prm"});

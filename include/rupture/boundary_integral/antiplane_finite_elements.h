@@ -53,8 +53,11 @@ namespace rupture
         double domain_size = 400e3;
         /// The ratio of neighbouring cells' sizes away from the fault.
         double growth = 1.1;
-        /// mu (Pa).
-        double shear_modulus = 1;
+        /// The antiplane shear moduli (Pa): C55 = mu, the stress sigma_xz
+        /// across the fault per u,x, and C44, sigma_yz per u,y (0: C55,
+        /// isotropic). An anisotropic body whose model plane is a plane of
+        /// mirror symmetry and C45 = 0: C55 u,xx + C44 u,yy = 0.
+        double shear_modulus = 1, vertical_shear_modulus = 0;
       };
 
       /// Mesh, factorise and solve (collective). Throws on settings out of

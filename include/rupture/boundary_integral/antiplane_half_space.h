@@ -48,11 +48,15 @@ namespace rupture
       /**
        * @p depth W (m) of the part of the fault that is solved (below it
        * the fault creeps at the plate rate), cut into elements of length
-       * about @p element_size (m); @p shear_modulus mu (Pa).
+       * about @p element_size (m); @p shear_modulus mu (Pa) of the kernel,
+       * @p moment_modulus that of the moments (0: mu; they differ for an
+       * anisotropic body, whose kernel takes sqrt(C44 C55) and whose
+       * moment C55).
        */
       AntiplaneHalfSpace(const double depth,
                          const double element_size,
-                         const double shear_modulus);
+                         const double shear_modulus,
+                         const double moment_modulus = 0);
 
       /// The number of elements N.
       unsigned int
@@ -94,11 +98,11 @@ namespace rupture
         return n * h;
       }
 
-      /// The shear modulus (Pa).
+      /// The shear modulus (Pa) of the moments.
       double
       shear_modulus() const override
       {
-        return mu;
+        return moment_mu;
       }
 
       /// The stress at the centre of element @p i of a unit slip on element
@@ -116,7 +120,7 @@ namespace rupture
     private:
       unsigned int n;
       double       h;
-      double       mu;
+      double       mu, moment_mu;
     };
   } // namespace BoundaryIntegral
 } // namespace rupture

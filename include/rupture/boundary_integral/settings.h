@@ -41,13 +41,23 @@ namespace rupture
                      std::vector<double> &normal_stress,
                      std::vector<double> &initial_shear_stress) const;
 
+      /// Within <Material>: an anisotropic first material's antiplane
+      /// moduli (shear_modulus = C55, vertical_shear_modulus = C44), and
+      /// the check that the body is homogeneous.
+      void
+      read_anisotropic_moduli(ParameterHandler &prm);
+
       bool        test_mode = false;
       std::string output_directory;
 
       // The medium and the fault.
-      double                                        shear_modulus     = 0;
-      double                                        radiation_damping = 0;
-      double                                        plate_rate        = 0;
+      /// The antiplane shear moduli (Pa): C55 (sigma_xz per u,x: the
+      /// modulus across the fault, of the moment) and C44 (sigma_yz per
+      /// u,y); equal for an isotropic body.
+      double                                        shear_modulus          = 0;
+      double                                        vertical_shear_modulus = 0;
+      double                                        radiation_damping      = 0;
+      double                                        plate_rate             = 0;
       std::unique_ptr<Friction::Interface>          law;
       std::string                                   law_name;
       Fault::EventCatalogue<2>                      events;

@@ -3,6 +3,9 @@
 
 #include <rupture/fault/contact.h>
 
+#include <array>
+#include <functional>
+
 namespace rupture
 {
   namespace Fault
@@ -34,6 +37,45 @@ namespace rupture
     };
 
     /**
+     * The friction ellipse at a fault point of normal @p n: its principal
+     * directions e_i in the fault plane, the factors a_i and b_i =
+     * 1 / a_i^2, and the norms it defines.
+     */
+    template <int dim>
+    struct EllipseFrame
+    {
+      EllipseFrame(const FrictionEllipse<dim> &ellipse,
+                   const Tensor<1, dim>       &n);
+
+      /// The number of directions in the fault plane.
+      static constexpr unsigned int n_directions = dim - 1;
+
+      /// The components of @p v along the principal directions.
+      std::array<double, 2>
+      components(const Tensor<1, dim> &v) const;
+
+      /// The vector with principal components @p c.
+      Tensor<1, dim>
+      vector(const std::array<double, 2> &c) const;
+
+      /// |A^-1 v|: the measure of a shear traction that the strength
+      /// bounds (the Euclidean norm for a disc).
+      double
+      strength_norm(const Tensor<1, dim> &v) const;
+
+      /// |A v|: the measure of a slip (rate) that the law sees.
+      double
+      dual_norm(const Tensor<1, dim> &v) const;
+
+      /// A^-2 @p v: the direction of the sliding rule at traction @p v.
+      Tensor<1, dim>
+      sliding_direction(const Tensor<1, dim> &v) const;
+
+      std::array<Tensor<1, dim>, dim - 1> e;
+      std::array<double, 2>               a = {{1, 1}}, b = {{1, 1}};
+    };
+
+    /**
      * A^-1 @p v for the tangential part of @p v in the plane of normal
      * @p n (its normal part dropped): the coordinates in which the
      * ellipse of @p ellipse is the disc of radius S.
@@ -45,17 +87,62 @@ namespace rupture
                    const Tensor<1, dim>       &v);
 
     /**
+     * The strength S(l) of a slip l (the dual norm of the step's slip
+     * increment), with its derivatives dS/dl and dS/d pressure.
+     */
+    using StrengthOfSlip =
+      std::function<double(double l, double &dS_dl, double &dS_dp)>;
+
+    /**
+     * The closest-point projection of a shear traction @p trial onto the
+     * friction set K = {|A^-1 tau| <= S(l)} in the metric of a stiffness
+     * k (Pa/m: the tangential penalty, or a split node's impedance over
+     * dt): tau = trial - k du with the slip increment du along the normal
+     * of K at tau, du = c A^-2 tau / k, so tau = (I + c A^-2)^-1 trial,
+     * and l = |A du| = c |A^-1 tau| / k. The caller has checked that
+     * |A^-1 trial| exceeds S(0).
+     */
+    struct EllipseProjection
+    {
+      /// The multiplier c >= 0 (dimensionless).
+      double c = 0;
+      /// The principal components of tau.
+      std::array<double, 2> tau = {{0, 0}};
+      /// |A^-1 tau| and the slip l.
+      double N = 0, l = 0;
+      /// d(|A^-1 tau| - S(l))/dc at the root: negative where the root is
+      /// unique (the law weakens slower than k allows).
+      double slope = 0;
+    };
+
+    template <int dim>
+    EllipseProjection
+    project_onto_ellipse(const EllipseFrame<dim> &frame,
+                         const Tensor<1, dim>    &trial,
+                         const double             k,
+                         const StrengthOfSlip    &strength);
+
+    /**
      * Penalty contact with anisotropic friction at one fault point: the
      * return mapping of return_map() for the set K of @p ellipse. The
      * elastic trial traction is returned to K by the closest-point
      * projection in the metric of the tangential penalty, which makes the
-     * sliding rule exact: tau = (I + c A^-2)^-1 tau_trial with the scalar
-     * c >= 0 found from |A^-1 tau| = S(l) and the slip increment l =
-     * |A delta u_p| = c |A^-1 tau| / p_t. The consistent tangent
-     * dT/d(delta) follows from the linearisation of these equations (not
-     * symmetric while sliding). The law is met at the step's end (first
-     * order in time); with a_1 = a_2 = 1 the result is return_map()'s
-     * without @p old_shear_traction, to round-off.
+     * sliding rule exact (project_onto_ellipse()), with the slip increment
+     * l = |A du_p| the law sees. The consistent tangent dT/d(delta)
+     * follows from the linearisation of these equations (not symmetric
+     * while sliding).
+     *
+     * Radiation damping eta acts on the slip rate as a vector (the
+     * traction is that of friction plus eta du_p / dt), so the projection
+     * runs in the stiffness p_t + eta / dt. Given the shear traction
+     * @p old_shear_traction at the step's start, a law of the slip rate is
+     * met at the middle of the step: the mean traction (T_n + tau) / 2,
+     * less the damping, lies on the set of the strength at the step's
+     * mean slip rate with the state evolved over half the step, and the
+     * slip increment along its normal there (the implicit midpoint rule;
+     * a projection of (T_n + trial) / 2 in the stiffness p_t / 2 + eta /
+     * dt). Otherwise the law is met at the step's end (first order). With
+     * a_1 = a_2 = 1 the result is return_map()'s to round-off.
      */
     template <int dim>
     ContactResponse<dim>
@@ -69,7 +156,9 @@ namespace rupture
                            const Friction::Interface  &law,
                            const Point<3>             &x,
                            const double                dt,
-                           const FrictionEllipse<dim> &ellipse);
+                           const FrictionEllipse<dim> &ellipse,
+                           const double                radiation_damping = 0,
+                           const Tensor<1, dim> *old_shear_traction = nullptr);
   } // namespace Fault
 } // namespace rupture
 

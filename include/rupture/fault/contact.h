@@ -42,6 +42,11 @@ namespace rupture
       double slip_increment = 0;
       /// Accumulated plastic (frictional) slip vector after the step (m).
       Tensor<1, dim> plastic_slip;
+      /// The frictional slip rate of the step as a vector (m/s): the plastic
+      /// slip increment of penalty contact over dt, the slip rate over the
+      /// next step that a split node's traction lets through. Set with
+      /// anisotropic friction (the sliding rule's direction), else zero.
+      Tensor<1, dim> sliding;
       /// Friction coefficient in effect.
       double friction = 0;
       /// Its derivative with respect to the slip increment (1/m): negative

@@ -97,6 +97,9 @@ namespace rupture
         Tensor<1, dim> slip_velocity;
         /// Traction on the minus side (Pa).
         Tensor<1, dim> traction;
+        /// The frictional slip rate (m/s; ContactResponse::sliding, set
+        /// with anisotropic friction).
+        Tensor<1, dim> sliding;
         double         slip_path    = 0;
         double         friction     = 0;
         double         rupture_time = -1;
@@ -228,6 +231,14 @@ namespace rupture
       {
         return split_node_method;
       }
+      /// Whether <Fault/Anisotropic friction> makes the friction set an
+      /// ellipse that is not a disc.
+      bool
+      has_anisotropic_friction() const
+      {
+        return anisotropic_friction;
+      }
+
       /// <Fault/Radiation damping> (Pa s/m; 0: none).
       double
       radiation_damping_coefficient() const
@@ -705,6 +716,37 @@ namespace rupture
                             const double          dt,
                             const Tensor<1, dim> &slip,
                             ContactResponse<dim> &r) const;
+
+      /**
+       * The split-node traction of a pair with anisotropic friction, for
+       * every law: the stick traction's shear part projected onto the
+       * friction ellipse in the pair's impedance (the slip over the next
+       * step along the ellipse's normal at the traction), the strength of
+       * the law as rate_dependent_traction() (@p centred false) or
+       * centred_rate_traction() (@p centred true) has it, or a slip law's
+       * strength. Sets what those set.
+       */
+      Tensor<1, dim>
+      anisotropic_split_traction(NodePair             &pair,
+                                 const Point<3>       &x,
+                                 const Tensor<1, dim> &stick_traction,
+                                 const double          tn,
+                                 const Tensor<1, dim> &inverse_sum,
+                                 const double          c,
+                                 const double          dt,
+                                 const Tensor<1, dim> &slip,
+                                 const bool            centred,
+                                 ContactResponse<dim> &r) const;
+
+      /// The length of a pair's slip @p v that the friction law sees: |A v|
+      /// with anisotropic friction, else |v|.
+      double
+      slip_measure(const NodePair &pair, const Tensor<1, dim> &v) const;
+
+      /// The measure of a shear traction @p t that the strength bounds:
+      /// |A^-1 t| with anisotropic friction, else |t|.
+      double
+      traction_measure(const NodePair &pair, const Tensor<1, dim> &t) const;
 
       MPI_Comm communicator;
 

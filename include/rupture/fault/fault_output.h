@@ -162,6 +162,11 @@ namespace rupture
       strike_component(const Tensor<1, dim> &v) const;
       double
       dip_component(const Tensor<1, dim> &v) const;
+      /// The direction of @p v in the fault plane in degrees from the
+      /// along-strike direction, positive up-dip (the rake of Aki and
+      /// Richards for a slip; 0 where @p v has no component in the plane).
+      double
+      rake_of(const Tensor<1, dim> &v) const;
       /// The down-dip distance of @p x from the down-dip origin (3-D; 0 in
       /// 2-D):
       /// its depth over the sine of the dip, or, on a horizontal fault,
