@@ -8,7 +8,10 @@
 //    slip rate lies within 1 degree of the ellipse's normal at the node's
 //    shear traction, A^-2 tau, computed here from the output's
 //    shear_traction. (The normal of the traction's own direction would
-//    be 10-20 degrees away: the rake test shows the turn.)
+//    be 10-20 degrees away: the rake test shows the turn.) There the
+//    traction lies on the ellipse of the strength, |A^-1 tau| = mu
+//    sigma_n (fields friction_coefficient, normal_traction), and the
+//    dissipation tau . V equals S |A V| (the review paper's eq. 5.2).
 //  - The isotropic limit: a strength ratio of 1 + 1e-12 runs the
 //    anisotropic code (projection onto the ellipse, dual norms) and must
 //    give the isotropic code's slip at every node at the end to 1e-7 of the
@@ -55,17 +58,24 @@ namespace
     return a;
   }
 
-  /// The largest angle (degrees) between the frictional slip rate and
-  /// A^-2 tau over the nodes sliding faster than 1 mm/s in @p vtu, and
-  /// their number.
+  /// Over the nodes sliding faster than 1 mm/s in @p vtu: the largest
+  /// angle (degrees) between the frictional slip rate and A^-2 tau
+  /// (@p largest), the largest relative distance of the traction from
+  /// the ellipse of the strength, | |A^-1 tau| - mu sigma_n | / (mu
+  /// sigma_n) (@p off_ellipse), and of the dissipation tau . V from
+  /// S |A V| (@p off_dissipation), and their number @p n.
   void
   sliding_rule(const std::string &vtu,
                const double       ratio,
                double            &largest,
+               double            &off_ellipse,
+               double            &off_dissipation,
                unsigned int      &n)
   {
-    const auto rate  = tests::vtu_field(vtu, "frictional_slip_rate");
-    const auto shear = tests::vtu_field(vtu, "shear_traction");
+    const auto rate     = tests::vtu_field(vtu, "frictional_slip_rate");
+    const auto shear    = tests::vtu_field(vtu, "shear_traction");
+    const auto friction = tests::vtu_field(vtu, "friction_coefficient");
+    const auto normal_t = tests::vtu_field(vtu, "normal_traction");
     for (unsigned int i = 0; 3 * i + 2 < rate.size(); ++i)
       {
         // e_1 = x, e_2 = -z.
@@ -78,6 +88,13 @@ namespace
         largest             = std::max(largest,
                            std::abs(std::remainder(slip - normal, 2 * M_PI)) *
                              180 / M_PI);
+        const double S      = friction[i] * std::max(-normal_t[i], 0.);
+        off_ellipse =
+          std::max(off_ellipse, std::abs(std::hypot(t1, t2 / ratio) - S) / S);
+        off_dissipation = std::max(off_dissipation,
+                                   std::abs(t1 * v1 + t2 * v2 -
+                                            S * std::hypot(v1, ratio * v2)) /
+                                     (S * std::hypot(v1, ratio * v2)));
         ++n;
       }
   }
@@ -111,14 +128,19 @@ main(int argc, char **argv)
       tests::run_in("rule",
                     {c.prm},
                     with(c.settings, {"Fault/Output/Output interval=0.1"}));
-      double       largest = 0;
-      unsigned int n       = 0;
+      double       largest = 0, off_ellipse = 0, off_dissipation = 0;
+      unsigned int n = 0;
       for (unsigned int step = 5; step <= 60; step += 5)
         {
           char name[64];
           std::snprintf(name, sizeof(name), "rule/fault/fault_%05u.vtu", step);
           if (tests::file_exists(name))
-            sliding_rule(tests::read_file(name), 2, largest, n);
+            sliding_rule(tests::read_file(name),
+                         2,
+                         largest,
+                         off_ellipse,
+                         off_dissipation,
+                         n);
         }
       // The isotropic limit.
       std::vector<std::vector<double>> slip;
@@ -146,13 +168,17 @@ main(int argc, char **argv)
       std::printf(
         "%s:\n  sliding rule: more than 20 sliding node-outputs: %s; "
         "slip rate within 1 degree of the ellipse's normal at "
-        "every one: %s (largest %.0e degree)\n  isotropic limit (ratio 1 + 1e-12 against "
-        "1): largest slip %.2f m, every node's slip equal to 1e-7 "
+        "every one: %s (largest %.0e degree); traction on the ellipse of "
+        "the strength, |A^-1 tau| = mu sigma_n, to 1e-6: %s; dissipation "
+        "tau . V = S |A V| to 1e-6: %s\n  isotropic limit (ratio 1 + 1e-12 "
+        "against 1): largest slip %.2f m, every node's slip equal to 1e-7 "
         "of it: %s\n",
         c.name.c_str(),
         n > 20 ? "yes" : "no",
         largest <= 1 ? "yes" : "no",
         largest <= 1e-6 ? 1e-6 : (largest <= 1e-3 ? 1e-3 : largest),
+        off_ellipse <= 1e-6 ? "yes" : "no",
+        off_dissipation <= 1e-6 ? "yes" : "no",
         largest_slip,
         !slip[0].empty() && slip[0].size() == slip[1].size() &&
             difference <= 1e-7 * largest_slip ?
