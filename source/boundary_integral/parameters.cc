@@ -10,6 +10,7 @@
 #include <deal.II/base/function_parser.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -233,15 +234,22 @@ namespace rupture
         Utilities::split_list(prm.get("Names"));
       const Material::AnisotropicEntries entries =
         Material::read_anisotropic_entries(prm, names);
+      // (The first material's factors: the body is that material.)
       for (const std::string entry : {"Stiffness factor", "Density factor"})
-        for (const std::string &field : Utilities::split_fields(prm.get(entry)))
-          AssertThrow(dealii::Utilities::trim(field).empty() ||
-                        dealii::Utilities::trim(field) == "1",
+        {
+          const auto fields = Utilities::split_fields(prm.get(entry));
+          const auto first =
+            fields.empty() ? std::string() : dealii::Utilities::trim(fields[0]);
+          char        *end   = nullptr;
+          const double value = std::strtod(first.c_str(), &end);
+          AssertThrow(first.empty() || (end && *end == '\0' && value == 1),
                       ExcMessage("<Material/" + entry +
                                  "> = " + prm.get(entry) +
                                  ": the boundary-integral method needs a "
                                  "homogeneous body (its stiffness comes "
-                                 "from one material). Allowed: 1."));
+                                 "from the first material alone). Allowed: "
+                                 "1 for the first material."));
+        }
       if (entries.symmetry.empty() ||
           entries.symmetry[0] == Material::Symmetry::isotropic)
         return;

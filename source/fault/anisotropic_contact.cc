@@ -253,7 +253,7 @@ namespace rupture
       // Weakening at the start of the slip steeper than the projection's
       // stiffness: the traction drops to the residual strength at once
       // (snap-back).
-      const bool snaps = (-dS >= k);
+      const bool snaps = (-dS >= k * std::min(b[0], b[nt - 1]));
       if (frame.strength_norm(projected) <= S0 * (1 + 1e-10))
         {
           r.status       = ContactStatus::stick;
@@ -281,7 +281,7 @@ namespace rupture
       // (The end traction's slope with l, as return_map() gives it: with
       // the damping, and twice the mean's when centred.)
       r.friction_derivative =
-        (pressure > 0) ? (dS + eta / dt) / (q * pressure) : 0.;
+        (pressure > 0) ? (dS + (eta > 0 ? eta / dt : 0.)) / (q * pressure) : 0.;
       r.traction     = normal_traction * n + trial - p_t * du;
       r.plastic_slip = old_plastic_slip + du;
       r.sliding      = du / dt;
@@ -303,9 +303,22 @@ namespace rupture
       if (!(S > 0) || !(N > 0))
         {
           // No strength left: the friction's shear traction stays zero,
-          // T_t = trial - (p_t / k) projected.
-          r.unstable_softening = snaps || (-dS >= k);
+          // T_t = trial - (p_t / k) projected, but it grows with the
+          // pressure along tau_f / S = A^2 projected / |A projected| (the
+          // limit of the projection), as return_map() keeps the term
+          // -mu p_n e (x) n.
+          r.unstable_softening =
+            snaps || (-dS >= k * std::min(b[0], b[nt - 1]));
           r.tangent += (p_t - p_t * q * p_t / k) * projector;
+          const double a_projected = frame.dual_norm(projected);
+          if (a_projected > 0)
+            {
+              Tensor<1, dim> u;
+              for (unsigned int i = 0; i < nt; ++i)
+                u += frame.a[i] * frame.a[i] * (projected * e[i]) * e[i];
+              r.tangent -=
+                (p_t / k) * mu * p_n / a_projected * outer_product(u, n);
+            }
           return r;
         }
       const double          S_l = dS, S_p = mu;

@@ -623,8 +623,8 @@ namespace rupture
                   (tn < 0) ? ts / (-tn) :
                              std::numeric_limits<double>::quiet_NaN(),
                   pair.state);
-                pair.state.slip_rate = pair.slip_velocity.norm();
-                pair.rupture_rate    = pair.state.slip_rate;
+                pair.state.slip_rate = slip_measure(pair, pair.slip_velocity);
+                pair.rupture_rate    = pair.slip_velocity.norm();
               }
               if (forced_region->value(pair.location) != 0)
                 {

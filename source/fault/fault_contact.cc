@@ -239,12 +239,20 @@ namespace rupture
           // The traction the law's heating and the dissipation see: with
           // anisotropic friction the one conjugate to the slip's dual norm,
           // (t . du) / |A du| (|A^-1 t| on the ellipse), so that it times
-          // the law's slip is the work t . du (the review paper's eq. 5.2).
+          // the law's slip is the work t . du (the review paper's eq. 5.2);
+          // never negative (the end traction of the centred rule can turn
+          // against the slip). Forced and hanging pairs, which slide
+          // without the projection, take the slip of the step.
           double traction_size = t.norm();
           if (anisotropic_friction)
             {
-              const double l = slip_measure(pair, pair.trial.sliding);
-              traction_size  = (l > 0) ? (t * pair.trial.sliding) / l :
+              Tensor<1, dim> du = pair.trial.sliding;
+              if (du.norm() == 0)
+                du = split_node_method ?
+                       pair.trial_slip - pair.slip :
+                       pair.trial.plastic_slip - pair.plastic_slip;
+              const double l = slip_measure(pair, du);
+              traction_size  = (l > 0) ? std::max((t * du) / l, 0.) :
                                          traction_measure(pair, t);
             }
           Friction::State updated;
@@ -266,7 +274,8 @@ namespace rupture
                                          updated);
               pair.slip_velocity = (pair.trial_slip - pair.slip) / dt;
             }
-          updated.slip_rate = pair.slip_velocity.norm();
+          // (The slip rate the law sees: |A V| with anisotropic friction.)
+          updated.slip_rate = slip_measure(pair, pair.slip_velocity);
           // Rupture time: the first time the slip rate exceeds 1 mm/s,
           // linearly interpolated within the step (SCEC convention). With
           // penalty contact the jump also holds the springs' elastic part
@@ -278,7 +287,7 @@ namespace rupture
           // anisotropic friction slip_increment is the dual norm |A slip|.)
           const double rate =
             split_node_method ?
-              updated.slip_rate :
+              pair.slip_velocity.norm() :
               (anisotropic_friction ?
                  (pair.trial.plastic_slip - pair.plastic_slip).norm() / dt :
                  pair.trial.slip_increment / dt);

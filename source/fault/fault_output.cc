@@ -598,7 +598,11 @@ namespace rupture
         {
           if (seas_format)
             {
-              directory.write(s.name + ".dat", seas_station(s, test_mode));
+              directory.write(
+                s.name + ".dat",
+                seas_station(s,
+                             !fault.friction().state_names().empty(),
+                             test_mode));
               continue;
             }
           std::ostringstream   out;
@@ -714,7 +718,9 @@ namespace rupture
 
     template <int dim>
     std::string
-    FaultOutput<dim>::seas_station(const Station &s, const bool test_mode) const
+    FaultOutput<dim>::seas_station(const Station &s,
+                                   const bool     has_state,
+                                   const bool     test_mode) const
     {
       const Tensor<1, dim> r = s.location - origin;
       std::ostringstream   location;
@@ -724,10 +730,15 @@ namespace rupture
       std::string out = Output::seas_station_header(location.str(), test_mode);
       // A row of the station: t, h-slip, h-slip-rate, h-shear-stress,
       // v-..., then with a state the normal stress and the state outputs
-      // (log10 theta first).
+      // (log10 theta first; without a state the columns after the SCEC
+      // ones are anisotropic friction's directions).
       s.rows.for_each([&](const std::vector<double> &row) {
-        out += Output::seas_station_row(
-          row[0], row[1], row[2], row[3], row.size() > 8 ? row[8] : 0.);
+        out +=
+          Output::seas_station_row(row[0],
+                                   row[1],
+                                   row[2],
+                                   row[3],
+                                   has_state && row.size() > 8 ? row[8] : 0.);
       });
       return out;
     }

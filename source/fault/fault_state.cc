@@ -462,7 +462,11 @@ namespace rupture
             ++unstable;
           const double slip = (pair.slip - pair.slip_at_start).norm();
           max_slip          = std::max(max_slip, slip);
-          max_rate          = std::max(max_rate, pair.state.slip_rate);
+          // (The Euclidean slip rate: the law's state holds |A V| with
+          // anisotropic friction.)
+          max_rate = std::max(max_rate,
+                              anisotropic_friction ? pair.slip_velocity.norm() :
+                                                     pair.state.slip_rate);
           moment += pair.shear_modulus * pair.area * slip;
           if (pair.rupture_time != NodeState<dim>::not_ruptured)
             {

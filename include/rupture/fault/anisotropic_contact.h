@@ -142,7 +142,9 @@ namespace rupture
      * slip increment along its normal there (the implicit midpoint rule;
      * a projection of (T_n + trial) / 2 in the stiffness p_t / 2 + eta /
      * dt). Otherwise the law is met at the step's end (first order). With
-     * a_1 = a_2 = 1 the result is return_map()'s to round-off.
+     * a_1 = a_2 = 1 the result is return_map()'s to round-off, except that
+     * centred the old traction enters as a vector where return_map() takes
+     * its part along the trial (the same where the two are parallel).
      */
     template <int dim>
     ContactResponse<dim>

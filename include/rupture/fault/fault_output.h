@@ -175,7 +175,9 @@ namespace rupture
       down_dip_distance(const Point<dim> &x) const;
       /// The text of station @p s in the SCEC SEAS layout.
       std::string
-      seas_station(const Station &s, const bool test_mode) const;
+      seas_station(const Station &s,
+                   const bool     has_state,
+                   const bool     test_mode) const;
 
       MPI_Comm    communicator;
       std::string station_text;
