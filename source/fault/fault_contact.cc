@@ -323,10 +323,13 @@ namespace rupture
           if (pair.forced || r.status != ContactStatus::slip ||
               r.friction_derivative >= 0)
             continue;
-          const double   tn  = r.traction * pair.normal;
-          const double   k_w = -r.friction_derivative * std::max(-tn, 0.);
-          const double   p_t = pair.tangential_penalty;
-          Tensor<1, dim> e   = r.traction - tn * pair.normal;
+          const double tn  = r.traction * pair.normal;
+          const double k_w = -r.friction_derivative * std::max(-tn, 0.);
+          const double p_t = pair.tangential_penalty;
+          // (The direction of the slip: with anisotropic friction the
+          // sliding rule's, not the traction's.)
+          Tensor<1, dim> e =
+            anisotropic_friction ? r.sliding : r.traction - tn * pair.normal;
           if (e.norm() == 0 || k_w == 0)
             continue;
           e /= e.norm();

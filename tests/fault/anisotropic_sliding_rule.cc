@@ -21,6 +21,9 @@
 // mm; a coarse miniature, not a benchmark), nucleated by a traction
 // perturbation that grows over 0.2 s, with both split-node updates
 // (centred, end of step). The penalty case (implicit) runs to 0.6 s only.
+// A fifth case loads the penalty fault quasi-statically
+// (inputs/anisotropic_quasi_static.prm: friction without weakening, the
+// load 30 degrees from strike): the sliding rule only.
 
 #include <deal.II/base/mpi.h>
 
@@ -112,6 +115,7 @@ main(int argc, char **argv)
   {
     std::string              name, prm;
     std::vector<std::string> settings;
+    bool                     limit = true;
   };
   const std::vector<Case> cases = {
     {"split nodes, slip weakening", split, {}},
@@ -121,7 +125,11 @@ main(int argc, char **argv)
      with(rate_and_state, {"Fault/Split-node friction time=end of step"})},
     {"penalty contact, slip weakening",
      penalty,
-     {"Time integration/End time=0.6"}}};
+     {"Time integration/End time=0.6"}},
+    {"penalty contact, quasi-static loading",
+     std::string(SOURCE_DIR) + "/inputs/anisotropic_quasi_static.prm",
+     {},
+     false}};
   for (const auto &c : cases)
     {
       // The sliding rule with the ratio 2 of the files.
@@ -130,7 +138,7 @@ main(int argc, char **argv)
                     with(c.settings, {"Fault/Output/Output interval=0.1"}));
       double       largest = 0, off_ellipse = 0, off_dissipation = 0;
       unsigned int n = 0;
-      for (unsigned int step = 5; step <= 60; step += 5)
+      for (unsigned int step = 1; step <= 60; ++step)
         {
           char name[64];
           std::snprintf(name, sizeof(name), "rule/fault/fault_%05u.vtu", step);
@@ -141,6 +149,23 @@ main(int argc, char **argv)
                          off_ellipse,
                          off_dissipation,
                          n);
+        }
+      if (!c.limit)
+        {
+          std::printf("%s:\n  sliding rule: more than 20 sliding "
+                      "node-outputs: %s; slip rate within 1 degree of the "
+                      "ellipse's normal at every one: %s (largest %.0e "
+                      "degree); traction on the ellipse of the strength, "
+                      "|A^-1 tau| = mu sigma_n, to 1e-6: %s; dissipation "
+                      "tau . V = S |A V| to 1e-6: %s\n",
+                      c.name.c_str(),
+                      n > 20 ? "yes" : "no",
+                      largest <= 1 ? "yes" : "no",
+                      largest <= 1e-6 ? 1e-6 :
+                                        (largest <= 1e-3 ? 1e-3 : largest),
+                      off_ellipse <= 1e-6 ? "yes" : "no",
+                      off_dissipation <= 1e-6 ? "yes" : "no");
+          continue;
         }
       // The isotropic limit.
       std::vector<std::vector<double>> slip;
