@@ -36,11 +36,11 @@ namespace rupture
         rupture_time,
         friction_value,
         first_vector // then plastic slip, slip, slip velocity, slip at the
-                     // start of the dynamic phase, traction (dim each), then
-                     // the state variables
+                     // start of the dynamic phase, traction, frictional slip
+                     // rate (dim each), then the state variables
       };
 
-      constexpr unsigned int n_vectors = 5;
+      constexpr unsigned int n_vectors = 6;
 
       /// The vectors of a pair (const or not) that a transfer carries, in
       /// their order after first_vector.
@@ -53,7 +53,8 @@ namespace rupture
            &pair.slip,
            &pair.slip_velocity,
            &pair.slip_at_start,
-           &pair.trial.traction}};
+           &pair.trial.traction,
+           &pair.trial.sliding}};
       }
     } // namespace
 

@@ -81,6 +81,15 @@ namespace rupture
           << time_parameters.scheme_name() << ", "
           << dealii::Utilities::MPI::n_mpi_processes(communicator)
           << " MPI rank(s)\n";
+    if (mesh_refinement.enabled() && mesh_refinement.levels > 2)
+      pcout << "   Note: <Mesh refinement/Levels> = " << mesh_refinement.levels
+            << ". More than two levels below the base mesh have made the "
+               "final slip too large (TPV3 in 3-D, three levels below 750 m "
+               "cells: +9.8 % at the reference station; in 2-D up to +7 %): "
+               "the error follows the coarse base cells outside the refined "
+               "band. Two levels below base cells at most four times the "
+               "front's were within 0.5 % (doc/performance.md, \"TPV3 with "
+               "three levels\").\n";
 
     record_memory("start");
     {
