@@ -96,14 +96,11 @@ namespace rupture
 
     template <int dim>
     Tensor<1, dim>
-    inverse_metric(const FrictionEllipse<dim> &ellipse,
-                   const Tensor<1, dim>       &n,
-                   const Tensor<1, dim>       &v)
+    EllipseFrame<dim>::inverse_metric(const Tensor<1, dim> &v) const
     {
-      const EllipseFrame<dim> frame(ellipse, n);
-      Tensor<1, dim>          result;
-      for (unsigned int i = 0; i + 1 < dim; ++i)
-        result += (v * frame.e[i]) / frame.a[i] * frame.e[i];
+      Tensor<1, dim> result;
+      for (unsigned int i = 0; i < n_directions; ++i)
+        result += (v * e[i]) / a[i] * e[i];
       return result;
     }
 
@@ -373,14 +370,6 @@ namespace rupture
                          const Tensor<1, 3> &,
                          const double,
                          const StrengthOfSlip &);
-    template Tensor<1, 2>
-    inverse_metric(const FrictionEllipse<2> &,
-                   const Tensor<1, 2> &,
-                   const Tensor<1, 2> &);
-    template Tensor<1, 3>
-    inverse_metric(const FrictionEllipse<3> &,
-                   const Tensor<1, 3> &,
-                   const Tensor<1, 3> &);
     template ContactResponse<2>
     anisotropic_return_map(const Tensor<1, 2> &,
                            const Tensor<1, 2> &,

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -143,10 +144,11 @@ namespace rupture
           const Tensor<1, dim> step_t = step - (step * n) * n;
           // (With anisotropic friction in the coordinates A^-1 tau, where
           // the stick region is the disc of radius S, as it is otherwise.)
+          std::optional<EllipseFrame<dim>> frame;
+          if (anisotropic_friction)
+            frame.emplace(friction_ellipse, n);
           const auto scaled = [&](const Tensor<1, dim> &v) {
-            return anisotropic_friction ?
-                     inverse_metric(friction_ellipse, n, v) :
-                     v;
+            return frame ? frame->inverse_metric(v) : v;
           };
           const Tensor<1, dim> T  = scaled(pair.trial.trial_traction);
           const Tensor<1, dim> D  = scaled(pair.tangential_penalty * step_t);

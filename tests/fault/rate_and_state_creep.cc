@@ -11,6 +11,7 @@
 
 #include "../tests.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -52,24 +53,16 @@ main(int argc, char **argv)
   // The state variable on the fault surface: theta = L / V_p at steady
   // sliding (the aging law), log10(0.02 / 1e-5) = 3.30103.
   {
-    const std::string vtu = tests::read_file("results/fault/fault_00040.vtu");
-    const std::string tag = "Name=\"log10_theta\" format=\"ascii\">";
-    const auto        at  = vtu.find(tag);
-    if (at == std::string::npos)
+    const auto values =
+      tests::vtu_field(tests::read_file("results/fault/fault_00040.vtu"),
+                       "log10_theta");
+    if (values.empty())
       std::printf("log10_theta: not in the fault output\n");
     else
       {
-        std::istringstream values(
-          vtu.substr(at + tag.size(),
-                     vtu.find("</DataArray>", at) - at - tag.size()));
-        double       v = 0, low = 1e300, high = -1e300;
-        unsigned int n = 0;
-        while (values >> v)
-          {
-            low  = std::min(low, v);
-            high = std::max(high, v);
-            ++n;
-          }
+        const double low  = *std::min_element(values.begin(), values.end());
+        const double high = *std::max_element(values.begin(), values.end());
+        const auto   n    = static_cast<unsigned int>(values.size());
         std::printf("log10_theta on the fault at the end: %u nodes, from "
                     "%.6f to %.6f (L/V_p: %.6f)\n",
                     n,

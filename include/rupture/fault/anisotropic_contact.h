@@ -67,6 +67,11 @@ namespace rupture
       double
       dual_norm(const Tensor<1, dim> &v) const;
 
+      /// A^-1 @p v (its tangential part): the coordinates in which the
+      /// ellipse is the disc of radius S.
+      Tensor<1, dim>
+      inverse_metric(const Tensor<1, dim> &v) const;
+
       /// A^-2 @p v: the direction of the sliding rule at traction @p v.
       Tensor<1, dim>
       sliding_direction(const Tensor<1, dim> &v) const;
@@ -74,17 +79,6 @@ namespace rupture
       std::array<Tensor<1, dim>, dim - 1> e;
       std::array<double, 2>               a = {{1, 1}}, b = {{1, 1}};
     };
-
-    /**
-     * A^-1 @p v for the tangential part of @p v in the plane of normal
-     * @p n (its normal part dropped): the coordinates in which the
-     * ellipse of @p ellipse is the disc of radius S.
-     */
-    template <int dim>
-    Tensor<1, dim>
-    inverse_metric(const FrictionEllipse<dim> &ellipse,
-                   const Tensor<1, dim>       &n,
-                   const Tensor<1, dim>       &v);
 
     /**
      * The strength S(l) of a slip l (the dual norm of the step's slip
