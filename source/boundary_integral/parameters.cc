@@ -169,8 +169,21 @@ namespace rupture
       double
       first_material_value(ParameterHandler &prm, const std::string &entry)
       {
-        const auto values =
-          Utilities::parse_doubles(prm.get(entry), "Material/" + entry);
+        std::vector<double> values;
+        try
+          {
+            values =
+              Utilities::parse_doubles(prm.get(entry), "Material/" + entry);
+          }
+        catch (const ExceptionBase &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(Utilities::message_of(e) +
+                                   " The boundary-integral method takes a "
+                                   "homogeneous body: give its constants as "
+                                   "numbers (functions of position are for "
+                                   "the finite-element methods)."));
+          }
         AssertThrow(!values.empty(),
                     ExcMessage("<Material/" + entry + "> is empty."));
         return values[0];

@@ -82,14 +82,17 @@ namespace rupture
       // The same check on every rank: all have all materials.
       std::ostringstream gravity_text;
       gravity_text << gravity;
+      // (Densities given as functions are at most 1e6 kg/m^3.)
       for (unsigned int i = 0; i < materials.n_materials(); ++i)
-        AssertThrow(std::isfinite(materials.get(i).density * gravity),
-                    ExcMessage("<Loads/Gravity> = " + gravity_text.str() +
-                               " m/s^2 times the density of material " +
-                               std::to_string(i) + " (" +
-                               materials.get(i).name +
-                               ") is not a finite force density. Allowed: a "
-                               "finite product (e.g. 9.81 m/s^2)."));
+        AssertThrow(
+          std::isfinite(
+            (materials.given_as_functions(i) ? 1e6 : materials.get(i).density) *
+            gravity),
+          ExcMessage("<Loads/Gravity> = " + gravity_text.str() +
+                     " m/s^2 times the density of material " +
+                     std::to_string(i) + " (" + materials.get(i).name +
+                     ") is not a finite force density. Allowed: a "
+                     "finite product (e.g. 9.81 m/s^2)."));
 
       for (const auto &cell :
            discretization.dof_handler().active_cell_iterators())
@@ -118,19 +121,22 @@ namespace rupture
                              u.first_vector_component;
 
             const types::material_id id = cell->material_id();
-            const std::function<std::pair<double, double>(const Point<dim> &)>
-              factors = [&](const Point<dim> &p) {
-                return std::make_pair(materials.stiffness_factor(id, p),
-                                      materials.density_factor(id, p));
-              };
+            const std::function<Material::ElasticConstants(const Point<dim> &)>
+              local = [&](const Point<dim> &p) { return materials.at(id, p); };
+            // The density at quadrature point q of @p values.
+            const auto density = [&](const FEValues<dim> &values,
+                                     const unsigned int   q) {
+              return varying ?
+                       materials.at(id, values.quadrature_point(q)).density :
+                       m.density;
+            };
             if (need_matrices)
               Operators::local_elasticity_matrices(fe_values,
                                                    u,
                                                    m,
                                                    k,
                                                    need_mass ? &mass : nullptr,
-                                                   varying ? &factors :
-                                                             nullptr);
+                                                   varying ? &local : nullptr);
             if (!stiffness_matrix_free)
               discretization.hanging_constraints().distribute_local_to_global(
                 k, dofs, stiffness_matrix);
@@ -143,14 +149,9 @@ namespace rupture
             if (gravity != 0)
               for (const unsigned int q : fe_values.quadrature_point_indices())
                 for (unsigned int i = 0; i < n; ++i)
-                  load(i) +=
-                    m.density *
-                    (varying ?
-                       materials.density_factor(id,
-                                                fe_values.quadrature_point(q)) :
-                       1.) *
-                    (g[component[i]] * fe_values.shape_value(i, q)) *
-                    fe_values.JxW(q);
+                  load(i) += density(fe_values, q) *
+                             (g[component[i]] * fe_values.shape_value(i, q)) *
+                             fe_values.JxW(q);
 
             if (use_lumped_mass)
               {
@@ -162,10 +163,7 @@ namespace rupture
                 for (const unsigned int q : lv.quadrature_point_indices())
                   for (unsigned int i = 0; i < n; ++i)
                     lumped(i) +=
-                      m.density *
-                      (varying ?
-                         materials.density_factor(id, lv.quadrature_point(q)) :
-                         1.) *
+                      density(lv, q) *
                       dealii::Utilities::fixed_power<2>(lv.shape_value(i, q)) *
                       lv.JxW(q);
                 discretization.hanging_constraints().distribute_local_to_global(
@@ -205,15 +203,12 @@ namespace rupture
                     absorbing.reinit(n);
                     for (const unsigned int q : fv.quadrature_point_indices())
                       {
-                        Tensor<1, dim> z = m.template boundary_impedance<dim>(
-                          fv.normal_vector(q));
-                        // (Impedances scale with sqrt(s r).)
-                        if (varying)
-                          z *= std::sqrt(
-                            materials.stiffness_factor(id,
-                                                       fv.quadrature_point(q)) *
-                            materials.density_factor(id,
-                                                     fv.quadrature_point(q)));
+                        const Tensor<1, dim> z =
+                          (varying ? materials.at(cell->material_id(),
+                                                  fv.quadrature_point(q)) :
+                                     m)
+                            .template boundary_impedance<dim>(
+                              fv.normal_vector(q));
                         for (unsigned int i = 0; i < n; ++i)
                           {
                             const unsigned int c =
@@ -421,11 +416,8 @@ namespace rupture
         if (cell->is_locally_owned() && (!selected || selected(cell)))
           {
             const types::material_id id = cell->material_id();
-            const std::function<std::pair<double, double>(const Point<dim> &)>
-              factors = [&](const Point<dim> &p) {
-                return std::make_pair(materials.stiffness_factor(id, p),
-                                      materials.density_factor(id, p));
-              };
+            const std::function<Material::ElasticConstants(const Point<dim> &)>
+              local = [&](const Point<dim> &p) { return materials.at(id, p); };
             const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
             hp_values.reinit(cell);
             const FEValues<dim> &fe_values = hp_values.get_present_fe_values();
@@ -440,7 +432,7 @@ namespace rupture
               materials.get(cell->material_id()),
               k,
               with_mass ? &mass : nullptr,
-              varying ? &factors : nullptr);
+              varying ? &local : nullptr);
             action(cell, dofs, k, mass);
           }
     }

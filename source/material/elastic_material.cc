@@ -163,7 +163,15 @@ namespace rupture
         prm.declare_entry("Density",
                           "2670",
                           Patterns::Anything(),
-                          "Density of each material (kg/m^3), > 0.");
+                          "Density of each material (kg/m^3), from 1e-3 to "
+                          "1e6: numbers separated by ',', or numbers and "
+                          "functions of x, y, z (z = 0 in 2-D) separated by "
+                          "';', one per material or one for all. Functions "
+                          "make an isotropic material's constants vary in "
+                          "space independently of each other (checked at "
+                          "the points of the mesh); an anisotropic "
+                          "material's density is a number (see <Density "
+                          "factor>).");
         prm.declare_entry("P-wave speed",
                           "6000",
                           Patterns::Anything(),
@@ -172,24 +180,28 @@ namespace rupture
                           "sqrt(2) times the S-wave speed, which keeps "
                           "Poisson's ratio in (0, 0.5) (a negative ratio "
                           "can be given with the parametrization \"Young's "
-                          "modulus and Poisson's ratio\").");
+                          "modulus and Poisson's ratio\"). Numbers or "
+                          "functions of x, y, z, as <Density>.");
         prm.declare_entry("S-wave speed",
                           "3464",
                           Patterns::Anything(),
                           "S-wave speed of each material (m/s), > 0. Used "
-                          "with the parametrization 'wave speeds'.");
+                          "with the parametrization 'wave speeds'. Numbers "
+                          "or functions of x, y, z, as <Density>.");
         prm.declare_entry("Young's modulus",
                           "8e10",
                           Patterns::Anything(),
                           "Young's modulus of each material (Pa), > 0. Used "
                           "with the parametrization \"Young's modulus and "
-                          "Poisson's ratio\".");
+                          "Poisson's ratio\". Numbers or functions of x, y, "
+                          "z, as <Density>.");
         prm.declare_entry("Poisson's ratio",
                           "0.25",
                           Patterns::Anything(),
                           "Poisson's ratio of each material, in (-1, 0.5). "
                           "Used with the parametrization \"Young's modulus "
-                          "and Poisson's ratio\".");
+                          "and Poisson's ratio\". Numbers or functions of x, "
+                          "y, z, as <Density>.");
         prm.declare_entry(
           "Symmetry",
           "isotropic",
@@ -262,23 +274,150 @@ namespace rupture
 
 
 
-      std::vector<double>
-      read_list(ParameterHandler  &prm,
-                const std::string &entry,
-                const unsigned int n)
+      /**
+       * Lame's constants, the tensor and the wave speeds of an isotropic
+       * material of density @p density from @p a and @p b (P- and S-wave
+       * speeds, or Young's modulus and Poisson's ratio), unchecked.
+       */
+      void
+      set_isotropic(ElasticConstants &m,
+                    const double      density,
+                    const double      a,
+                    const double      b,
+                    const bool        by_speeds)
       {
-        const std::vector<double> values =
-          Utilities::parse_doubles(prm.get(entry), "Material/" + entry);
-        AssertThrow(values.size() == n || values.size() == 1,
-                    ExcMessage("The entry <Material/" + entry + "> has " +
-                               std::to_string(values.size()) +
-                               " values, but <Material/Names> lists " +
-                               std::to_string(n) +
-                               " materials. Give one value per material, or "
-                               "a single value for all of them."));
-        if (values.size() == 1)
-          return std::vector<double>(n, values[0]);
-        return values;
+        m.density = density;
+        if (by_speeds)
+          {
+            m.mu     = m.density * b * b;
+            m.lambda = m.density * a * a - 2 * m.mu;
+          }
+        else
+          {
+            m.mu     = a / (2 * (1 + b));
+            m.lambda = a * b / ((1 + b) * (1 - 2 * b));
+          }
+        m.voigt         = isotropic_voigt_matrix(m.lambda, m.mu);
+        const double vp = std::sqrt((m.lambda + 2 * m.mu) / m.density);
+        const double vs = std::sqrt(m.mu / m.density);
+        m.speeds_2d     = {vs, vp};
+        m.speeds_3d     = {vs, vp};
+      }
+
+
+
+      /// Throws a message naming the entry and @p which unless @p density
+      /// is allowed.
+      void
+      check_density(const double density, const std::string &which)
+      {
+        // Far outside this range the mass matrix over- or underflows (a
+        // density of 1e308 times a cell's volume).
+        std::ostringstream message;
+        message << "<Material/Density>" << which << " is " << density
+                << " kg/m^3. Allowed: densities from 1e-3 to 1e6 kg/m^3 (SI "
+                   "units; rock is about 2700).";
+        AssertThrow(density >= 1e-3 && density <= 1e6,
+                    ExcMessage(message.str()));
+      }
+
+
+
+      /**
+       * set_isotropic() with the values checked: throws a message naming
+       * the entry and @p which (" of material 0 (rock)", perhaps with the
+       * point) otherwise.
+       */
+      void
+      set_checked_isotropic(ElasticConstants  &m,
+                            const double       density,
+                            const double       a,
+                            const double       b,
+                            const bool         by_speeds,
+                            const std::string &which)
+      {
+        check_density(density, which);
+        if (by_speeds)
+          {
+            const double vp = a, vs = b;
+            AssertThrow(vs > 0 && std::isfinite(vs),
+                        ExcMessage("<Material/S-wave speed>" + which + " is " +
+                                   short_number(vs) +
+                                   ", but it must be > 0 (m/s)."));
+            AssertThrow(vp > std::sqrt(2.) * vs && std::isfinite(vp),
+                        ExcMessage("<Material/P-wave speed>" + which + " is " +
+                                   short_number(vp) +
+                                   " m/s, but it must exceed sqrt(2) times the "
+                                   "S-wave speed (" +
+                                   short_number(std::sqrt(2.) * vs) +
+                                   " m/s); otherwise Lame's lambda is negative "
+                                   "and Poisson's ratio is < 0 (this program "
+                                   "requires 0 < Poisson's ratio < 0.5 when "
+                                   "wave speeds are given)."));
+          }
+        else
+          {
+            const double E = a, nu = b;
+            AssertThrow(E > 0 && std::isfinite(E),
+                        ExcMessage("<Material/Young's modulus>" + which +
+                                   " is " + short_number(E) +
+                                   ", but it must be > 0 (Pa)."));
+            AssertThrow(nu > -1 && nu < 0.5,
+                        ExcMessage("<Material/Poisson's ratio>" + which +
+                                   " is " + short_number(nu) +
+                                   ", but it must lie in (-1, 0.5); 0.5 "
+                                   "is an incompressible material, "
+                                   "which this displacement formulation "
+                                   "cannot represent."));
+          }
+        set_isotropic(m, density, a, b, by_speeds);
+        // Each value may be fine and their combination overflow (a
+        // density of 1e308 times a squared wave speed).
+        const double vp = m.p_wave_speed(), vs = m.s_wave_speed();
+        // Wave speeds above the speed of light are a unit error (the
+        // program works in SI units), and they would make the explicit
+        // step, which scales with h / vp, vanishingly small.
+        const double speed_of_light = 299792458;
+        AssertThrow(std::isfinite(m.mu) && std::isfinite(m.lambda) &&
+                      std::isfinite(vp) && std::isfinite(vs) && vp > 0 &&
+                      vs > 0 && vp <= speed_of_light,
+                    ExcMessage("The elastic constants" + which +
+                               " are out of range: from its "
+                               "<Material/Density>, <Material/P-wave "
+                               "speed> and <Material/S-wave speed> (or, "
+                               "by <Material/Parametrization>, "
+                               "<Material/Young's modulus> and "
+                               "<Material/Poisson's ratio>) (density " +
+                               short_number(m.density) +
+                               " kg/m^3) follow mu = " + short_number(m.mu) +
+                               " Pa, lambda = " + short_number(m.lambda) +
+                               " Pa, vp = " + short_number(vp) +
+                               " m/s and vs = " + short_number(vs) +
+                               " m/s. Allowed: values whose moduli and "
+                               "wave speeds are finite and positive, the "
+                               "wave speeds below the speed of light (in "
+                               "SI units: e.g. 2700 kg/m^3, 6000 and "
+                               "3464 m/s)."));
+      }
+
+
+
+      /// The constants with the stiffness times @p s, the density times
+      /// @p r.
+      void
+      scale(ElasticConstants &m, const double s, const double r)
+      {
+        m.lambda *= s;
+        m.mu *= s;
+        for (auto &row : m.voigt)
+          for (double &x : row)
+            x *= s;
+        m.density *= r;
+        for (SpeedRange *range : {&m.speeds_2d, &m.speeds_3d})
+          {
+            range->slowest *= std::sqrt(s / r);
+            range->fastest *= std::sqrt(s / r);
+          }
       }
     } // namespace
 
@@ -297,25 +436,17 @@ namespace rupture
         AssertThrow(!names.empty(),
                     ExcMessage("The entry <Material/Names> must name at least "
                                "one material."));
-        const unsigned int  n       = names.size();
-        std::vector<double> density = read_list(prm, "Density", n);
-
+        const unsigned int n = names.size();
         materials.resize(n);
-        const bool by_speeds = (prm.get("Parametrization") == "wave speeds");
-        std::vector<double> a, b;
-        if (by_speeds)
-          {
-            a = read_list(prm, "P-wave speed", n);
-            b = read_list(prm, "S-wave speed", n);
-          }
-        else
-          {
-            a = read_list(prm, "Young's modulus", n);
-            b = read_list(prm, "Poisson's ratio", n);
-          }
+        by_speeds = (prm.get("Parametrization") == "wave speeds");
+        fields.parse(prm, names, by_speeds);
 
         const AnisotropicEntries anisotropic =
           read_anisotropic_entries(prm, names);
+        functions.assign(n, false);
+        for (unsigned int i = 0; i < n; ++i)
+          functions[i] = (anisotropic.symmetry[i] == Symmetry::isotropic &&
+                          fields.varies(i));
         factors.parse(prm, names);
 
         for (unsigned int i = 0; i < n; ++i)
@@ -324,95 +455,30 @@ namespace rupture
             m.name              = names[i];
             const std::string which =
               " of material " + std::to_string(i) + " (" + names[i] + ")";
-            {
-              // Far outside this range the mass matrix over- or underflows
-              // (a density of 1e308 times a cell's volume).
-              std::ostringstream message;
-              message << "<Material/Density>" << which << " is " << density[i]
-                      << " kg/m^3. Allowed: densities from 1e-3 to 1e6 kg/m^3 "
-                         "(SI units; rock is about 2700).";
-              AssertThrow(density[i] >= 1e-3 && density[i] <= 1e6,
-                          ExcMessage(message.str()));
-            }
-            m.density = density[i];
+            const std::array<double, 3> v = fields.numbers(i);
             if (anisotropic.symmetry[i] != Symmetry::isotropic)
               {
+                AssertThrow(!std::isnan(v[0]),
+                            ExcMessage(
+                              "<Material/Density>" + which +
+                              " is a function, but the material is "
+                              "anisotropic. Allowed: a number (its density "
+                              "may vary in space by <Material/Density "
+                              "factor>)."));
+                check_density(v[0], which);
+                m.density = v[0];
                 set_anisotropic(m, anisotropic, i, which);
                 continue;
               }
-            if (by_speeds)
+            if (functions[i])
               {
-                const double vp = a[i], vs = b[i];
-                AssertThrow(vs > 0 && std::isfinite(vs),
-                            ExcMessage("<Material/S-wave speed>" + which +
-                                       " is " + short_number(vs) +
-                                       ", but it must be > 0 (m/s)."));
-                AssertThrow(vp > std::sqrt(2.) * vs && std::isfinite(vp),
-                            ExcMessage(
-                              "<Material/P-wave speed>" + which + " is " +
-                              short_number(vp) +
-                              " m/s, but it must exceed sqrt(2) times the "
-                              "S-wave speed (" +
-                              short_number(std::sqrt(2.) * vs) +
-                              " m/s); otherwise Lame's lambda is negative "
-                              "and Poisson's ratio is < 0 (this program "
-                              "requires 0 < Poisson's ratio < 0.5 when "
-                              "wave speeds are given)."));
-                m.mu     = m.density * vs * vs;
-                m.lambda = m.density * vp * vp - 2 * m.mu;
+                // Checked at the mesh's points (check_on_mesh()); the
+                // constants themselves are at().
+                m.density = m.lambda = m.mu =
+                  std::numeric_limits<double>::quiet_NaN();
+                continue;
               }
-            else
-              {
-                const double E = a[i], nu = b[i];
-                AssertThrow(E > 0 && std::isfinite(E),
-                            ExcMessage("<Material/Young's modulus>" + which +
-                                       " is " + short_number(E) +
-                                       ", but it must be > 0 (Pa)."));
-                AssertThrow(nu > -1 && nu < 0.5,
-                            ExcMessage("<Material/Poisson's ratio>" + which +
-                                       " is " + short_number(nu) +
-                                       ", but it must lie in (-1, 0.5); 0.5 "
-                                       "is an incompressible material, "
-                                       "which this displacement formulation "
-                                       "cannot represent."));
-                m.mu     = E / (2 * (1 + nu));
-                m.lambda = E * nu / ((1 + nu) * (1 - 2 * nu));
-              }
-            // Each value may be fine and their combination overflow (a
-            // density of 1e308 times a squared wave speed).
-            const double vp = m.p_wave_speed(), vs = m.s_wave_speed();
-            const auto   number = [](const double x) {
-              std::ostringstream out;
-              out << x;
-              return out.str();
-            };
-            // Wave speeds above the speed of light are a unit error (the
-            // program works in SI units), and they would make the explicit
-            // step, which scales with h / vp, vanishingly small.
-            const double speed_of_light = 299792458;
-            AssertThrow(std::isfinite(m.mu) && std::isfinite(m.lambda) &&
-                          std::isfinite(vp) && std::isfinite(vs) && vp > 0 &&
-                          vs > 0 && vp <= speed_of_light,
-                        ExcMessage("The elastic constants" + which +
-                                   " are out of range: from its "
-                                   "<Material/Density>, <Material/P-wave "
-                                   "speed> and <Material/S-wave speed> (or, "
-                                   "by <Material/Parametrization>, "
-                                   "<Material/Young's modulus> and "
-                                   "<Material/Poisson's ratio>) (density " +
-                                   number(m.density) +
-                                   " kg/m^3) follow mu = " + number(m.mu) +
-                                   " Pa, lambda = " + number(m.lambda) +
-                                   " Pa, vp = " + number(vp) +
-                                   " m/s and vs = " + number(vs) +
-                                   " m/s. Allowed: values whose moduli and "
-                                   "wave speeds are finite and positive, the "
-                                   "wave speeds below the speed of light (in "
-                                   "SI units: e.g. 2700 kg/m^3, 6000 and "
-                                   "3464 m/s)."));
-            m.voigt     = isotropic_voigt_matrix(m.lambda, m.mu);
-            m.speeds_2d = {vs, vp};
-            m.speeds_3d = {vs, vp};
+            set_checked_isotropic(m, v[0], v[1], v[2], by_speeds, which);
           }
 
         // Factors given as numbers are folded into the constants.
@@ -420,20 +486,10 @@ namespace rupture
           {
             const double s = factors.constant_stiffness(i);
             const double r = factors.constant_density(i);
-            if (s == 1 && r == 1)
+            if ((s == 1 && r == 1) || functions[i])
               continue;
             ElasticConstants &m = materials[i];
-            m.lambda *= s;
-            m.mu *= s;
-            for (auto &row : m.voigt)
-              for (double &x : row)
-                x *= s;
-            m.density *= r;
-            for (SpeedRange *range : {&m.speeds_2d, &m.speeds_3d})
-              {
-                range->slowest *= std::sqrt(s / r);
-                range->fastest *= std::sqrt(s / r);
-              }
+            scale(m, s, r);
             const SpeedRange  &v = (dim == 2 ? m.speeds_2d : m.speeds_3d);
             std::ostringstream message;
             message << "<Material/Stiffness factor> " << s
@@ -454,6 +510,61 @@ namespace rupture
 
 
     template <int dim_>
+    ElasticConstants
+    ElasticMaterials::at(const types::material_id id,
+                         const Point<dim_>       &p) const
+    {
+      Assert(id < materials.size(), ExcIndexRange(id, 0, materials.size()));
+      ElasticConstants m = materials[id];
+      if (functions[id])
+        {
+          const std::array<double, 3> v = fields.values(id, p);
+          set_isotropic(m, v[0], v[1], v[2], by_speeds);
+        }
+      const double s = factors.stiffness(id, p), r = factors.density(id, p);
+      if (s != 1 || r != 1 || functions[id])
+        scale(m,
+              functions[id] ? s * factors.constant_stiffness(id) : s,
+              functions[id] ? r * factors.constant_density(id) : r);
+      return m;
+    }
+
+
+
+    ElasticConstants
+    ElasticMaterials::reference(const types::material_id id,
+                                const double             kappa) const
+    {
+      Assert(id < materials.size(), ExcIndexRange(id, 0, materials.size()));
+      if (!functions[id])
+        return materials[id];
+      ElasticConstants r = materials[id];
+      r.density          = 1;
+      r.mu               = 1;
+      r.lambda           = kappa;
+      r.voigt            = isotropic_voigt_matrix(r.lambda, r.mu);
+      r.speeds_2d = r.speeds_3d = {1, std::sqrt(r.lambda + 2)};
+      return r;
+    }
+
+
+
+    template <int dim_>
+    std::array<double, 3>
+    ElasticMaterials::reference_ratios(const types::material_id id,
+                                       const Point<dim_>       &p) const
+    {
+      if (!functions[id])
+        return {factors.stiffness(id, p),
+                factors.density(id, p),
+                std::numeric_limits<double>::quiet_NaN()};
+      const ElasticConstants m = at(id, p);
+      return {m.mu, m.density, m.lambda};
+    }
+
+
+
+    template <int dim_>
     double
     ElasticMaterials::check_on_mesh(const Triangulation<dim_> &mesh,
                                     const unsigned int         degree,
@@ -463,10 +574,43 @@ namespace rupture
         factors.check(mesh, degree, communicator);
       double fastest = 0;
       for (unsigned int i = 0; i < materials.size(); ++i)
-        fastest = std::max(fastest,
-                           scale[i] *
-                             materials[i].template wave_speeds<dim_>().fastest);
-      return fastest;
+        if (!functions[i])
+          fastest =
+            std::max(fastest,
+                     scale[i] *
+                       materials[i].template wave_speeds<dim_>().fastest);
+      if (!has_functions())
+        return fastest;
+
+      // Constants given as functions: every value allowed at every point
+      // of the material's cells.
+      std::string error;
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (cell->is_locally_owned() && error.empty() &&
+            cell->material_id() < materials.size() &&
+            functions[cell->material_id()])
+          for (const Point<dim_> &p : check_points<dim_>(cell, degree))
+            {
+              const types::material_id id = cell->material_id();
+              std::ostringstream       which;
+              which << " of material " << id << " (" << materials[id].name
+                    << ") at (" << p << ")";
+              try
+                {
+                  ElasticConstants            m;
+                  const std::array<double, 3> v = fields.values(id, p);
+                  set_checked_isotropic(
+                    m, v[0], v[1], v[2], by_speeds, which.str());
+                  fastest = std::max(fastest, at(id, p).p_wave_speed());
+                }
+              catch (const ExceptionBase &e)
+                {
+                  error = Utilities::message_of(e);
+                  break;
+                }
+            }
+      Utilities::throw_if_any(error, communicator);
+      return dealii::Utilities::MPI::max(fastest, communicator);
     }
 
 
@@ -599,6 +743,17 @@ namespace rupture
                 }
               continue;
             }
+          if (functions[i])
+            {
+              const auto &e = fields.entries();
+              out << "   Material " << i << " (" << m.name
+                  << "): constants that vary in space (functions of x, y, "
+                     "z): "
+                  << e[0] << " = " << fields.text(0, i) << ", " << e[1] << " = "
+                  << fields.text(1, i) << ", " << e[2] << " = "
+                  << fields.text(2, i) << "\n";
+              continue;
+            }
           out << "   Material " << i << " (" << m.name
               << "): rho = " << m.density
               << " kg/m^3, vp = " << std::setprecision(6) << m.p_wave_speed()
@@ -633,5 +788,15 @@ namespace rupture
     ElasticMaterials::check_on_mesh<3>(const Triangulation<3> &,
                                        const unsigned int,
                                        const MPI_Comm) const;
+    template ElasticConstants
+    ElasticMaterials::at<2>(const types::material_id, const Point<2> &) const;
+    template ElasticConstants
+    ElasticMaterials::at<3>(const types::material_id, const Point<3> &) const;
+    template std::array<double, 3>
+    ElasticMaterials::reference_ratios<2>(const types::material_id,
+                                          const Point<2> &) const;
+    template std::array<double, 3>
+    ElasticMaterials::reference_ratios<3>(const types::material_id,
+                                          const Point<3> &) const;
   } // namespace Material
 } // namespace rupture

@@ -150,6 +150,27 @@ namespace rupture
 
 
     template <int dim>
+    std::vector<Point<dim>>
+    check_points(const typename Triangulation<dim>::active_cell_iterator &cell,
+                 const unsigned int degree)
+    {
+      const MappingQ1<dim>     mapping;
+      const QGauss<dim>        gauss(degree + 1);
+      const QGaussLobatto<dim> lobatto(degree + 1);
+      std::vector<Point<dim>>  points;
+      for (const unsigned int v : cell->vertex_indices())
+        points.push_back(cell->vertex(v));
+      for (const Quadrature<dim> *q :
+           {static_cast<const Quadrature<dim> *>(&gauss),
+            static_cast<const Quadrature<dim> *>(&lobatto)})
+        for (const Point<dim> &xi : q->get_points())
+          points.push_back(mapping.transform_unit_to_real_cell(cell, xi));
+      return points;
+    }
+
+
+
+    template <int dim>
     std::vector<double>
     SpatialFactors::check(const Triangulation<dim> &mesh,
                           const unsigned int        degree,
@@ -159,24 +180,15 @@ namespace rupture
       if (!varies())
         return largest;
       std::fill(largest.begin(), largest.end(), 0.);
-      const MappingQ1<dim>     mapping;
-      const QGauss<dim>        gauss(degree + 1);
-      const QGaussLobatto<dim> lobatto(degree + 1);
-      std::string              error;
+      std::string error;
       for (const auto &cell : mesh.active_cell_iterators())
         if (cell->is_locally_owned() && error.empty())
           {
             const types::material_id id = cell->material_id();
             if (id >= names.size())
               continue; // (reported by the material check)
-            std::vector<Point<dim>> points;
-            for (const unsigned int v : cell->vertex_indices())
-              points.push_back(cell->vertex(v));
-            for (const Quadrature<dim> *q :
-                 {static_cast<const Quadrature<dim> *>(&gauss),
-                  static_cast<const Quadrature<dim> *>(&lobatto)})
-              for (const Point<dim> &xi : q->get_points())
-                points.push_back(mapping.transform_unit_to_real_cell(cell, xi));
+            const std::vector<Point<dim>> points =
+              check_points<dim>(cell, degree);
             for (const Point<dim> &p : points)
               {
                 const double s = stiffness(id, p), r = density(id, p);
@@ -208,6 +220,9 @@ namespace rupture
 
 
 #define RUPTURE_INSTANTIATE(dim)                                            \
+  template std::vector<Point<dim>> check_points<dim>(                       \
+    const typename Triangulation<dim>::active_cell_iterator &,              \
+    const unsigned int);                                                    \
   template double SpatialFactors::stiffness<dim>(const types::material_id,  \
                                                  const Point<dim> &) const; \
   template double SpatialFactors::density<dim>(const types::material_id,    \

@@ -71,11 +71,18 @@ namespace rupture
       bool                                           anisotropic = false;
       AlignedVector<SymmetricTensor<4, dim, Number>> stiffness;
       std::vector<unsigned int>                      tensor;
-      /// Constants that vary in space: the stiffness and density factors
-      /// of each cell batch at each quadrature point (batch * n_q + q).
+      /// Constants that vary in space, at each quadrature point of each
+      /// cell batch (batch * n_q + q): Lame's constants and the density
+      /// (ElasticMaterials::at()); with anisotropic materials, the factor
+      /// of the batch's tensor (its lanes of materials whose isotropic
+      /// constants are functions hold zero tensors and use lambda and mu
+      /// instead, which are zero in the other lanes).
       bool                  varying = false;
       unsigned int          n_q     = 0;
-      AlignedVector<Number> stiffness_scale, density_scale;
+      AlignedVector<Number> q_lambda, q_mu, q_density, q_scale;
+      /// With anisotropic materials: whether a batch has lanes whose
+      /// isotropic constants are functions.
+      std::vector<bool> batch_has_functions;
       /// The factors of K and M in the product of the next cell loop.
       mutable double stiffness_factor = 1, mass_factor = 0;
       /// The Kelvin-Voigt zone: 1 in the lanes of its cells, 0 elsewhere,
@@ -139,27 +146,28 @@ namespace rupture
                                    const double       k_factor,
                                    const double       m_factor) const
       {
+        const Number k(k_factor);
         for (const unsigned int q : phi.quadrature_point_indices())
           {
-            const Number sk =
-              Number(k_factor) * stiffness_scale[cell * n_q + q];
-            if (k_factor != 0 && anisotropic)
-              phi.submit_symmetric_gradient(
-                sk * (stiffness[tensor[cell]] * phi.get_symmetric_gradient(q)),
-                q);
-            else if (k_factor != 0)
+            const unsigned int i = cell * n_q + q;
+            if (k_factor != 0)
               {
-                SymmetricTensor<2, dim, Number> eps =
+                const SymmetricTensor<2, dim, Number> eps =
                   phi.get_symmetric_gradient(q);
-                const Number trace = trace_of(eps);
-                eps *= 2. * sk * mu[cell];
-                for (unsigned int d = 0; d < dim; ++d)
-                  eps[d][d] += sk * lambda[cell] * trace;
-                phi.submit_symmetric_gradient(eps, q);
+                SymmetricTensor<2, dim, Number> sigma;
+                if (!anisotropic || batch_has_functions[cell])
+                  {
+                    const Number trace = trace_of(eps);
+                    sigma              = (2. * k * q_mu[i]) * eps;
+                    for (unsigned int d = 0; d < dim; ++d)
+                      sigma[d][d] += k * q_lambda[i] * trace;
+                  }
+                if (anisotropic)
+                  sigma += (k * q_scale[i]) * (stiffness[tensor[cell]] * eps);
+                phi.submit_symmetric_gradient(sigma, q);
               }
             if (m_factor != 0)
-              phi.submit_value(Number(m_factor) * density[cell] *
-                                 density_scale[cell * n_q + q] *
+              phi.submit_value(Number(m_factor) * q_density[i] *
                                  phi.get_value(q),
                                q);
           }
@@ -381,8 +389,12 @@ namespace rupture
                 SymmetricTensor<4, dim, typename Implementation::Number>());
               for (unsigned int v = 0; v < lanes.size(); ++v)
                 {
+                  // (Zero for materials whose isotropic constants are
+                  // functions: their lanes use q_lambda, q_mu.)
                   const SymmetricTensor<4, dim> c =
-                    materials.get(lanes[v]).template stiffness<dim>();
+                    materials.given_as_functions(lanes[v]) ?
+                      SymmetricTensor<4, dim>() :
+                      materials.get(lanes[v]).template stiffness<dim>();
                   for (unsigned int i = 0; i < dim; ++i)
                     for (unsigned int j = i; j < dim; ++j)
                       for (unsigned int k = 0; k < dim; ++k)
@@ -399,23 +411,45 @@ namespace rupture
           // loops' quadrature points.)
           const QGauss<dim> gauss(fe_degree + 1);
           impl->n_q = gauss.size();
-          impl->stiffness_scale.resize(n_batches * impl->n_q);
-          impl->density_scale.resize(n_batches * impl->n_q);
+          // (Lame's constants only where some lanes need them, the
+          // tensor's factor only with anisotropic materials.)
+          const typename Implementation::Number zero(0.);
+          const std::size_t n_values = n_batches * impl->n_q;
+          impl->q_density.resize(n_values, zero);
+          if (!impl->anisotropic || materials.has_functions())
+            {
+              impl->q_lambda.resize(n_values, zero);
+              impl->q_mu.resize(n_values, zero);
+            }
+          if (impl->anisotropic)
+            impl->q_scale.resize(n_values, zero);
+          impl->batch_has_functions.assign(n_batches, false);
           for (unsigned int b = 0; b < n_batches; ++b)
             for (unsigned int v = 0;
                  v < impl->matrix_free.n_active_entries_per_cell_batch(b);
                  ++v)
               {
                 const auto cell = impl->matrix_free.get_cell_iterator(b, v);
+                const types::material_id id = cell->material_id();
+                // (Isotropic constants given as functions.)
+                const bool function = materials.given_as_functions(id);
+                if (function)
+                  impl->batch_has_functions[b] = true;
                 for (unsigned int q = 0; q < impl->n_q; ++q)
                   {
                     const Point<dim> p =
                       mapping.transform_unit_to_real_cell(cell, gauss.point(q));
-                    const types::material_id id = cell->material_id();
-                    impl->stiffness_scale[b * impl->n_q + q][v] =
-                      materials.stiffness_factor(id, p);
-                    impl->density_scale[b * impl->n_q + q][v] =
-                      materials.density_factor(id, p);
+                    const Material::ElasticConstants m = materials.at(id, p);
+                    const unsigned int               i = b * impl->n_q + q;
+                    impl->q_density[i][v]              = m.density;
+                    if (impl->anisotropic && !function)
+                      impl->q_scale[i][v] =
+                        materials.reference_ratios(id, p)[0];
+                    else
+                      {
+                        impl->q_lambda[i][v] = m.lambda;
+                        impl->q_mu[i][v]     = m.mu;
+                      }
                   }
               }
         }
@@ -577,8 +611,10 @@ namespace rupture
       return impl->matrix_free.memory_consumption() +
              impl->lambda.memory_consumption() + impl->mu.memory_consumption() +
              impl->stiffness.memory_consumption() +
-             impl->stiffness_scale.memory_consumption() +
-             impl->density_scale.memory_consumption();
+             impl->q_lambda.memory_consumption() +
+             impl->q_mu.memory_consumption() +
+             impl->q_density.memory_consumption() +
+             impl->q_scale.memory_consumption();
     }
 
 

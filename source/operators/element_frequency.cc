@@ -255,9 +255,38 @@ namespace rupture
         unit = 1e-7 * GridTools::minimal_cell_diameter(
                         dof_handler.get_triangulation());
 
-      // The matrix M^-1/2 K M^-1/2 of one cell.
-      const auto scaled_matrix = [&](const auto &cell) {
-        const auto &m = materials.get(cell->material_id());
+      // Constants that vary in space: a cell's eigenvalues are at most
+      // (largest stiffness ratio / smallest density ratio) over its points
+      // times those of its shape with the material's reference constants
+      // (K grows at most by the one, the lumped M shrinks at most by the
+      // other; ElasticMaterials::reference_ratios()). Each shape takes the
+      // largest such ratio of its cells. Where isotropic constants are
+      // functions, the reference's lambda / mu is the cell's largest lambda
+      // over its largest mu, rounded up to a bin of 1 % in (lambda + 2 mu)
+      // / mu: the bin joins the shape's key.
+      const bool   varying   = materials.varies_in_space();
+      const double bin_width = std::log(1.01);
+      const auto   kappa_of  = [&](const std::int64_t bin) {
+        return std::exp(bin * bin_width) - 2;
+      };
+      const auto key_of = [&](const auto &cell, const double kappa) {
+        auto key = cell_shape_key(cell, unit);
+        if (!std::isnan(kappa))
+          key.push_back(static_cast<std::int64_t>(
+            std::ceil(std::log(kappa + 2) / bin_width)));
+        return key;
+      };
+
+      // The matrix M^-1/2 K M^-1/2 of one cell (with the reference
+      // constants of its key where its constants vary).
+      const auto scaled_matrix = [&](const auto                      &cell,
+                                     const std::vector<std::int64_t> &key) {
+        const Material::ElasticConstants m =
+          materials.reference(cell->material_id(),
+                              materials.given_as_functions(
+                                cell->material_id()) ?
+                                kappa_of(key.back()) :
+                                0.);
         if (const auto h = cell_box_edges(cell))
           return boxes.scaled_matrix(*h, m, a);
         const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
@@ -290,47 +319,54 @@ namespace rupture
         typename DoFHandler<dim>::active_cell_iterator cell;
         double                                         bound;
       };
-      // Constants that vary in space: a cell's eigenvalues are at most
-      // (largest stiffness factor / smallest density factor) over its
-      // points times those of its shape with the material's constants
-      // (K grows at most by the one, the lumped M shrinks at most by the
-      // other). Each shape takes the largest such ratio of its cells.
-      const bool varying = materials.varies_in_space();
       std::map<std::vector<std::int64_t>, double> shape_ratio;
       const MappingQ1<dim>                        mapping;
+      // The ratio of a cell and the lambda / mu of its reference (NaN
+      // where the constants are not functions).
       const auto cell_ratio = [&](const auto &cell) {
-        double s_max = 0, r_min = 1e300;
+        double s_max = 0, r_min = 1e300,
+               lambda_max = std::numeric_limits<double>::quiet_NaN();
         for (const Quadrature<dim> *q :
              {&q_cells[0], static_cast<const Quadrature<dim> *>(&q_lumped[0])})
           for (const Point<dim> &xi : q->get_points())
             {
-              const Point<dim> p =
-                mapping.transform_unit_to_real_cell(cell, xi);
-              s_max =
-                std::max(s_max,
-                         materials.stiffness_factor(cell->material_id(), p));
-              r_min =
-                std::min(r_min,
-                         materials.density_factor(cell->material_id(), p));
+              const auto [s, r, lambda] = materials.reference_ratios(
+                cell->material_id(),
+                mapping.transform_unit_to_real_cell(cell, xi));
+              s_max = std::max(s_max, s);
+              r_min = std::min(r_min, r);
+              if (!std::isnan(lambda))
+                lambda_max = std::isnan(lambda_max) ?
+                               lambda :
+                               std::max(lambda_max, lambda);
             }
-        return s_max / r_min;
+        return std::make_pair(s_max / r_min, lambda_max / s_max);
       };
       const auto ratio_of = [&](const std::vector<std::int64_t> &key) {
         return varying ? shape_ratio[key] : 1.;
       };
-      std::vector<NewShape>               new_shapes;
-      std::set<std::vector<std::int64_t>> queued;
-      if (varying)
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              double &r = shape_ratio[cell_shape_key(cell, unit)];
-              r         = std::max(r, cell_ratio(cell));
-            }
+      // The keys of the locally owned cells, in the order of the loop.
+      std::vector<std::vector<std::int64_t>> keys;
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
           {
-            auto key = cell_shape_key(cell, unit);
+            if (!varying)
+              {
+                keys.push_back(cell_shape_key(cell, unit));
+                continue;
+              }
+            const auto [ratio, kappa] = cell_ratio(cell);
+            keys.push_back(key_of(cell, kappa));
+            double &r = shape_ratio[keys.back()];
+            r         = std::max(r, ratio);
+          }
+      std::vector<NewShape>               new_shapes;
+      std::set<std::vector<std::int64_t>> queued;
+      unsigned int                        index = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            auto key = std::move(keys[index++]);
             if (const auto known = seen.find(key); known != seen.end())
               omega2_max = std::max(omega2_max, known->second * ratio_of(key));
             else if (queued.insert(key).second)
@@ -338,7 +374,7 @@ namespace rupture
                 double bound = std::numeric_limits<double>::infinity();
                 if (cell_box_edges(cell))
                   {
-                    scaled_matrix(cell);
+                    scaled_matrix(cell, key);
                     bound = gershgorin_bound(a);
                   }
                 new_shapes.push_back({std::move(key), cell, bound});
@@ -357,7 +393,7 @@ namespace rupture
             seen.emplace(shape.key, shape.bound);
           else
             {
-              scaled_matrix(shape.cell);
+              scaled_matrix(shape.cell, shape.key);
               const double largest =
                 largest_eigenvalue_above(a, omega2_max / ratio);
               omega2_max = std::max(omega2_max, largest * ratio);

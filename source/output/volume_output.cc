@@ -495,7 +495,12 @@ namespace rupture
                     }
                   const Tensor<2, dim> gradient =
                     reference_gradient * invert(jacobian);
-                  const auto          &m = materials.get(cell->material_id());
+                  // (Constants that vary in space: those at the cell's
+                  // centre.)
+                  const Material::ElasticConstants m =
+                    materials.varies_in_space() ?
+                      materials.at(cell->material_id(), cell->center()) :
+                      materials.get(cell->material_id());
                   const Tensor<2, dim> strain =
                     0.5 * (gradient + transpose(gradient));
                   Tensor<2, dim> stress =
@@ -505,11 +510,6 @@ namespace rupture
                                      2 * m.mu * strain) :
                       Tensor<2, dim>(m.template stress<dim>(
                         SymmetricTensor<2, dim>(strain)));
-                  // Constants that vary in space: the stiffness factor at
-                  // the cell's centre.
-                  if (materials.varies_in_space())
-                    stress *= materials.stiffness_factor(cell->material_id(),
-                                                         cell->center());
                   for (unsigned int a = 0; a < dim; ++a)
                     for (unsigned int b = 0; b < dim; ++b)
                       values[9 * c + 3 * a + b] = stress[a][b];

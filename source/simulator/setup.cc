@@ -37,8 +37,8 @@ namespace rupture
         [this](const types::material_id id,
                const Tensor<1, dim>    &normal,
                const Point<dim>        &location) {
-          return materials.get(id).template shear_modulus_across<dim>(normal) *
-                 materials.stiffness_factor(id, location);
+          return materials.at(id, location)
+            .template shear_modulus_across<dim>(normal);
         },
         communicator);
     };

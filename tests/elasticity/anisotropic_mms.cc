@@ -1,6 +1,6 @@
 // Convergence in space against a manufactured solution of 2-D dynamics in
 // an anisotropic medium whose constants vary in space
-// (inputs/anisotropic_mms.prm, written by contrib/make-anisotropic-mms): a
+// (inputs/anisotropic_mms.prm, written by contrib/make-mms): a
 // general tensor whose in-plane part couples normal and shear strains,
 // stiffness factor 1 + x y / 2, density factor 1 + x^2 / 2, u = U(x) (1 +
 // t^2), which both time integrators integrate exactly, so that the error

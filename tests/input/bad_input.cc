@@ -104,6 +104,20 @@ main(int argc, char **argv)
                "500\nend\n");
   write("density_factor.prm",
         base + "subsection Material\n  set Density factor = -2\nend\n");
+  // Wave speeds as functions of position: vp falls below sqrt(2) vs at
+  // x = 500; a function density for an anisotropic material; a field
+  // that is neither a number nor a function.
+  write("wave_speed_function.prm",
+        base + "subsection Material\n  set P-wave speed = 6000 - 10*x\n"
+               "end\n");
+  write("anisotropic_density_function.prm",
+        base + "subsection Material\n  set Density = 2700 + y\n  set "
+               "Symmetry = orthotropic\n  set Stiffness = C11 = 9e10, C22 = "
+               "9e10, C33 = 9e10, C12 = 3e10, C13 = 3e10, C23 = 3e10, C44 = "
+               "3e10, C55 = 3e10, C66 = 3e10\nend\n");
+  write("density_field.prm",
+        base + "subsection Material\n  set Names = a, b\n  set Density = "
+               "2700; 2700 + w\nend\n");
   write("anisotropic_friction_normal.prm",
         base + "set Dimension = 3\nsubsection Fault\n  set Model = penalty "
                "contact\n  set Plane point = 0, 500, 0\n  set Plane "
@@ -232,6 +246,10 @@ main(int argc, char **argv)
   check("function with an unknown variable", {"function.prm"});
   check("stiffness factor not positive on the cells", {"stiffness_factor.prm"});
   check("negative density factor", {"density_factor.prm"});
+  check("P-wave speed function below sqrt(2) vs", {"wave_speed_function.prm"});
+  check("density function of an anisotropic material",
+        {"anisotropic_density_function.prm"});
+  check("density field with an unknown variable", {"density_field.prm"});
   check("anisotropic friction direction normal to the fault",
         {"anisotropic_friction_normal.prm"});
   check("2-D anisotropic material without a mirror plane",

@@ -2,11 +2,13 @@
 #define rupture_material_elastic_material_h
 
 #include <rupture/material/anisotropy.h>
+#include <rupture/material/isotropic_fields.h>
 #include <rupture/material/spatial_factors.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -123,35 +125,77 @@ namespace rupture
       any_anisotropic() const;
 
       /**
-       * Whether a material's constants vary in space (<Material/Stiffness
-       * factor> or <Material/Density factor> is a function): then the
-       * stiffness of material @p id at @p p is stiffness_factor() times
-       * that of get(id), and its density density_factor() times get(id)'s.
+       * Whether a material's constants vary in space: an isotropic
+       * material's <Density>, wave speeds or moduli given as functions of
+       * position, or <Material/Stiffness factor> or <Material/Density
+       * factor> a function. Then at() gives a material's constants at a
+       * point, and get() is not to be used for them.
        */
       bool
       varies_in_space() const
       {
-        return factors.varies();
-      }
-
-      template <int dim>
-      double
-      stiffness_factor(const types::material_id id, const Point<dim> &p) const
-      {
-        return factors.stiffness(id, p);
-      }
-
-      template <int dim>
-      double
-      density_factor(const types::material_id id, const Point<dim> &p) const
-      {
-        return factors.density(id, p);
+        return factors.varies() || has_functions();
       }
 
       /**
-       * Collective: check the spatial factors on the locally owned cells
-       * of @p mesh (SpatialFactors::check()) and return the fastest phase
-       * speed of the model in @p dim dimensions, the factors included.
+       * The constants of material @p id at @p p: those of get(id) with the
+       * functions of position evaluated and the factors applied (the
+       * stiffness times the stiffness factor, the density times the
+       * density factor). Not checked (check_on_mesh() checks them at the
+       * points of the mesh).
+       */
+      template <int dim>
+      ElasticConstants
+      at(const types::material_id id, const Point<dim> &p) const;
+
+      /**
+       * For bounds of the eigenvalues of cells whose constants vary (the
+       * stable step): at @p p, a stiffness ratio s, a density ratio r and,
+       * for a material whose isotropic constants are functions, lambda(p)
+       * (NaN otherwise). Where only factors vary, s and r are the factors:
+       * the elastic energy density at p is s times that of reference(id),
+       * the density r times its density. Where isotropic constants are
+       * functions, s = mu(p) and r = rho(p): over a set of points, the
+       * energy density lambda tr(eps)^2 + 2 mu eps : eps is at most
+       * max(s) times that of reference(id, max(lambda) / max(s)) for every
+       * strain, and the density at least min(r) times reference()'s.
+       */
+      template <int dim>
+      std::array<double, 3>
+      reference_ratios(const types::material_id id, const Point<dim> &p) const;
+
+      /**
+       * The constants that reference_ratios() refers to: get(id) where only
+       * factors vary; where isotropic constants are functions, lambda =
+       * @p kappa, mu = 1, density 1 (the energy density grows with
+       * lambda, so any larger @p kappa bounds it as well).
+       */
+      ElasticConstants
+      reference(const types::material_id id, const double kappa) const;
+
+      /// Whether isotropic constants are functions of position.
+      bool
+      has_functions() const
+      {
+        return std::find(functions.begin(), functions.end(), true) !=
+               functions.end();
+      }
+
+      /// Whether material @p id's isotropic constants are functions of
+      /// position (get(id) then holds no numbers: NaN).
+      bool
+      given_as_functions(const types::material_id id) const
+      {
+        return functions[id];
+      }
+
+      /**
+       * Collective: check the constants on the locally owned cells of
+       * @p mesh (the factors by SpatialFactors::check(); functions of
+       * position at the same points: each value allowed, the material
+       * positive definite), throwing on every process a message that
+       * names the entry, the material and the point otherwise; return the
+       * fastest phase speed of the model in @p dim dimensions.
        */
       template <int dim>
       double
@@ -195,6 +239,11 @@ namespace rupture
       std::vector<ElasticConstants> materials;
       unsigned int                  dim = 3;
       SpatialFactors                factors;
+      IsotropicFields               fields;
+      bool                          by_speeds = true;
+      /// Whether material i is isotropic with constants given as functions
+      /// (anisotropic materials ignore the isotropic entries).
+      std::vector<bool> functions;
     };
   } // namespace Material
 } // namespace rupture

@@ -26,6 +26,16 @@ namespace rupture
      * given as a number is folded into the material's constants when they
      * are read (ElasticMaterials), so only functions are evaluated later.
      */
+    /**
+     * The points at which constants that vary in space are checked on a
+     * cell: its vertices, and its Gauss and Gauss-Lobatto points of
+     * @p degree + 1 per direction (those of the operators' quadratures).
+     */
+    template <int dim>
+    std::vector<Point<dim>>
+    check_points(const typename Triangulation<dim>::active_cell_iterator &cell,
+                 const unsigned int degree);
+
     class SpatialFactors
     {
     public:

@@ -22,9 +22,9 @@ namespace rupture
      * (isotropic or anisotropic) elasticity on the cell that @p fe_values was
      * reinit'ed on.
      * @p u extracts the side of the displacement that lives on this cell.
-     * With @p factors (constants that vary in space), the stiffness and
-     * the density at each quadrature point are multiplied by the factors
-     * it returns there (@p fe_values then needs update_quadrature_points).
+     * With @p local (constants that vary in space), the constants at each
+     * quadrature point are those it returns there instead of @p m
+     * (@p fe_values then needs update_quadrature_points).
      */
     template <int dim>
     inline void
@@ -34,8 +34,8 @@ namespace rupture
       const Material::ElasticConstants &m,
       FullMatrix<double>               &k,
       FullMatrix<double>               *mass,
-      const std::function<std::pair<double, double>(const Point<dim> &)>
-        *factors = nullptr)
+      const std::function<Material::ElasticConstants(const Point<dim> &)>
+        *local = nullptr)
     {
       const unsigned int n = fe_values.dofs_per_cell;
       k                    = 0;
@@ -44,16 +44,18 @@ namespace rupture
       std::vector<SymmetricTensor<2, dim>> eps(n);
       std::vector<double>                  div(n);
       std::vector<Tensor<1, dim>>          phi(n);
-      const SymmetricTensor<4, dim>        c = m.template stiffness<dim>();
+      SymmetricTensor<4, dim>              c = m.template stiffness<dim>();
+      Material::ElasticConstants           at_q;
       for (const unsigned int q : fe_values.quadrature_point_indices())
         {
-          double JxW = fe_values.JxW(q), mass_JxW = JxW;
-          if (factors)
+          const double JxW = fe_values.JxW(q);
+          if (local)
             {
-              const auto [s, r] = (*factors)(fe_values.quadrature_point(q));
-              JxW *= s;
-              mass_JxW *= r;
+              at_q = (*local)(fe_values.quadrature_point(q));
+              if (!at_q.isotropic())
+                c = at_q.template stiffness<dim>();
             }
+          const Material::ElasticConstants &mq = local ? at_q : m;
           for (unsigned int i = 0; i < n; ++i)
             {
               eps[i] = fe_values[u].symmetric_gradient(i, q);
@@ -63,14 +65,14 @@ namespace rupture
           for (unsigned int i = 0; i < n; ++i)
             for (unsigned int j = 0; j < n; ++j)
               {
-                if (m.isotropic())
-                  k(i, j) += (m.lambda * div[i] * div[j] +
-                              2 * m.mu * (eps[i] * eps[j])) *
+                if (mq.isotropic())
+                  k(i, j) += (mq.lambda * div[i] * div[j] +
+                              2 * mq.mu * (eps[i] * eps[j])) *
                              JxW;
                 else
                   k(i, j) += (eps[i] * (c * eps[j])) * JxW;
                 if (mass)
-                  (*mass)(i, j) += m.density * (phi[i] * phi[j]) * mass_JxW;
+                  (*mass)(i, j) += mq.density * (phi[i] * phi[j]) * JxW;
               }
         }
     }

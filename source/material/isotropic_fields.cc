@@ -1,0 +1,170 @@
+#include <rupture/base/utilities.h>
+#include <rupture/material/isotropic_fields.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace rupture
+{
+  namespace Material
+  {
+    namespace
+    {
+      /// The text as a number, if it is one (surrounding blanks allowed).
+      bool
+      read_number(const std::string &text, double &value)
+      {
+        const auto first = text.find_first_not_of(" \t");
+        if (first == std::string::npos)
+          return false;
+        const auto   last    = text.find_last_not_of(" \t");
+        std::string  trimmed = text.substr(first, last - first + 1);
+        char        *end     = nullptr;
+        const double x       = std::strtod(trimmed.c_str(), &end);
+        if (end != trimmed.c_str() + trimmed.size())
+          return false;
+        value = x;
+        return true;
+      }
+    } // namespace
+
+
+
+    void
+    IsotropicFields::parse(ParameterHandler               &prm,
+                           const std::vector<std::string> &names,
+                           const bool                      by_speeds)
+    {
+      entry_names          = {"Density",
+                     by_speeds ? "P-wave speed" : "Young's modulus",
+                     by_speeds ? "S-wave speed" : "Poisson's ratio"};
+      const unsigned int n = names.size();
+      for (unsigned int e = 0; e < 3; ++e)
+        {
+          const std::string        entry = "<Material/" + entry_names[e] + ">";
+          const std::string        text  = prm.get(entry_names[e]);
+          std::vector<std::string> list;
+          if (text.find(';') != std::string::npos)
+            list = Utilities::split_fields(text);
+          else
+            {
+              // A comma separated list of numbers, or else one function
+              // (which may hold commas: if(y < 0, 1, 2)).
+              list = Utilities::split_fields(text, ',');
+              double x;
+              for (const std::string &field : list)
+                if (!read_number(field, x))
+                  {
+                    list = {text};
+                    break;
+                  }
+            }
+          AssertThrow(list.size() == 1 || list.size() == n,
+                      ExcMessage("The entry " + entry + " has " +
+                                 std::to_string(list.size()) +
+                                 " values, but <Material/Names> lists " +
+                                 std::to_string(n) +
+                                 " materials. Give one value per material "
+                                 "(numbers separated by ',', or numbers and "
+                                 "functions of x, y, z separated by ';'), or "
+                                 "a single one for all of them."));
+          if (list.size() == 1)
+            list.assign(n, list[0]);
+          fields[e] = list;
+          number_values[e].assign(n, std::numeric_limits<double>::quiet_NaN());
+          functions[e].clear();
+          functions[e].resize(n);
+          for (unsigned int i = 0; i < n; ++i)
+            {
+              AssertThrow(!list[i].empty(),
+                          ExcMessage("The entry " + entry +
+                                     " has no value for material " +
+                                     std::to_string(i) + " (" + names[i] +
+                                     "). Give a number or a function of x, "
+                                     "y, z."));
+              if (read_number(list[i], number_values[e][i]))
+                continue;
+              try
+                {
+                  functions[e][i] = Utilities::parse_function<3>(
+                    list[i], 1, "Material/" + entry_names[e], "x,y,z");
+                }
+              catch (const ExceptionBase &error)
+                {
+                  // The parser's reason, without the general advice.
+                  std::string reason = Utilities::message_of(error);
+                  const auto  from   = reason.find("> (");
+                  const auto  to     = reason.find(").", from);
+                  if (from != std::string::npos && to != std::string::npos)
+                    reason = reason.substr(from + 3, to - from - 3);
+                  AssertThrow(false,
+                              ExcMessage(
+                                "The entry " + entry + " of material " +
+                                std::to_string(i) + " (" + names[i] + ") is '" +
+                                list[i] +
+                                "', neither a number nor a function of x, "
+                                "y, z (" +
+                                reason +
+                                "). Allowed: numbers separated by ',', or "
+                                "numbers and functions of x, y, z separated "
+                                "by ';'."));
+                }
+            }
+        }
+    }
+
+
+
+    bool
+    IsotropicFields::varies(const unsigned int i) const
+    {
+      for (const auto &f : functions)
+        if (i < f.size() && f[i])
+          return true;
+      return false;
+    }
+
+
+
+    bool
+    IsotropicFields::varies() const
+    {
+      for (unsigned int i = 0; i < functions[0].size(); ++i)
+        if (varies(i))
+          return true;
+      return false;
+    }
+
+
+
+    std::array<double, 3>
+    IsotropicFields::numbers(const unsigned int i) const
+    {
+      return {number_values[0][i], number_values[1][i], number_values[2][i]};
+    }
+
+
+
+    template <int dim>
+    std::array<double, 3>
+    IsotropicFields::values(const unsigned int i, const Point<dim> &p) const
+    {
+      Point<3> x;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] = p[d];
+      std::array<double, 3> v;
+      for (unsigned int e = 0; e < 3; ++e)
+        v[e] =
+          functions[e][i] ? functions[e][i]->value(x) : number_values[e][i];
+      return v;
+    }
+
+
+
+    template std::array<double, 3>
+    IsotropicFields::values<2>(const unsigned int, const Point<2> &) const;
+    template std::array<double, 3>
+    IsotropicFields::values<3>(const unsigned int, const Point<3> &) const;
+  } // namespace Material
+} // namespace rupture
