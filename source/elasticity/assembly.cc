@@ -148,10 +148,13 @@ namespace rupture
             load.reinit(n);
             if (gravity != 0)
               for (const unsigned int q : fe_values.quadrature_point_indices())
-                for (unsigned int i = 0; i < n; ++i)
-                  load(i) += density(fe_values, q) *
-                             (g[component[i]] * fe_values.shape_value(i, q)) *
-                             fe_values.JxW(q);
+                {
+                  const double rho = density(fe_values, q);
+                  for (unsigned int i = 0; i < n; ++i)
+                    load(i) += rho *
+                               (g[component[i]] * fe_values.shape_value(i, q)) *
+                               fe_values.JxW(q);
+                }
 
             if (use_lumped_mass)
               {
@@ -161,11 +164,14 @@ namespace rupture
                 const FEValues<dim> &lv = hp_lumped.get_present_fe_values();
                 lumped.reinit(n);
                 for (const unsigned int q : lv.quadrature_point_indices())
-                  for (unsigned int i = 0; i < n; ++i)
-                    lumped(i) +=
-                      density(lv, q) *
-                      dealii::Utilities::fixed_power<2>(lv.shape_value(i, q)) *
-                      lv.JxW(q);
+                  {
+                    const double rho = density(lv, q);
+                    for (unsigned int i = 0; i < n; ++i)
+                      lumped(i) += rho *
+                                   dealii::Utilities::fixed_power<2>(
+                                     lv.shape_value(i, q)) *
+                                   lv.JxW(q);
+                  }
                 discretization.hanging_constraints().distribute_local_to_global(
                   lumped, dofs, lumped_mass_vector);
               }

@@ -583,25 +583,68 @@ namespace rupture
         return fastest;
 
       // Constants given as functions: every value allowed at every point
-      // of the material's cells.
-      std::string error;
+      // of the material's cells, the factors included. (A test without
+      // messages first: the messages are written for a failing point
+      // only, which keeps this at a few function evaluations per point.)
+      const double speed_of_light = 299792458;
+      std::string  error;
       for (const auto &cell : mesh.active_cell_iterators())
         if (cell->is_locally_owned() && error.empty() &&
             cell->material_id() < materials.size() &&
             functions[cell->material_id()])
           for (const Point<dim_> &p : check_points<dim_>(cell, degree))
             {
-              const types::material_id id = cell->material_id();
-              std::ostringstream       which;
+              const types::material_id    id = cell->material_id();
+              const std::array<double, 3> v  = fields.values(id, p);
+              const double                s  = factors.stiffness(id, p) *
+                               factors.constant_stiffness(id),
+                           r = factors.density(id, p) *
+                               factors.constant_density(id);
+              double mu, modulus; // (mu and lambda + 2 mu)
+              bool   valid = (v[0] >= 1e-3 && v[0] <= 1e6);
+              if (by_speeds)
+                {
+                  valid = valid && v[2] > 0 && std::isfinite(v[2]) &&
+                          v[1] > std::sqrt(2.) * v[2] && std::isfinite(v[1]);
+                  mu      = v[0] * v[2] * v[2];
+                  modulus = v[0] * v[1] * v[1];
+                }
+              else
+                {
+                  valid = valid && v[1] > 0 && std::isfinite(v[1]) &&
+                          v[2] > -1 && v[2] < 0.5;
+                  mu = v[1] / (2 * (1 + v[2]));
+                  modulus =
+                    2 * mu + v[1] * v[2] / ((1 + v[2]) * (1 - 2 * v[2]));
+                }
+              const double vp = std::sqrt(modulus / v[0]);
+              valid           = valid && std::isfinite(mu) && mu > 0 &&
+                      std::isfinite(vp) && vp > 0 && vp <= speed_of_light &&
+                      v[0] * r >= 1e-3 && v[0] * r <= 1e6 &&
+                      vp * std::sqrt(s / r) <= speed_of_light;
+              if (valid)
+                {
+                  fastest = std::max(fastest, vp * std::sqrt(s / r));
+                  continue;
+                }
+              std::ostringstream which;
               which << " of material " << id << " (" << materials[id].name
                     << ") at (" << p << ")";
               try
                 {
-                  ElasticConstants            m;
-                  const std::array<double, 3> v = fields.values(id, p);
+                  ElasticConstants m;
                   set_checked_isotropic(
                     m, v[0], v[1], v[2], by_speeds, which.str());
-                  fastest = std::max(fastest, at(id, p).p_wave_speed());
+                  std::ostringstream message;
+                  message << "<Material/Stiffness factor> and <Material/"
+                             "Density factor>"
+                          << which.str() << " make its density " << v[0] * r
+                          << " kg/m^3 and its P-wave speed "
+                          << vp * std::sqrt(s / r)
+                          << " m/s. Allowed: densities from 1e-3 to 1e6 "
+                             "kg/m^3 and speeds below the speed of light "
+                             "(SI units).";
+                  AssertThrow(false, ExcMessage(message.str()));
                 }
               catch (const ExceptionBase &e)
                 {

@@ -27,6 +27,27 @@ namespace rupture
         value = x;
         return true;
       }
+
+
+
+      /// @p text split at the commas outside parentheses, trimmed.
+      std::vector<std::string>
+      split_top_level(const std::string &text)
+      {
+        std::vector<std::string> items(1);
+        int                      depth = 0;
+        for (const char c : text)
+          {
+            depth += (c == '(') - (c == ')');
+            if (c == ',' && depth == 0)
+              items.emplace_back();
+            else
+              items.back() += c;
+          }
+        for (std::string &item : items)
+          item = dealii::Utilities::trim(item);
+        return items;
+      }
     } // namespace
 
 
@@ -49,15 +70,27 @@ namespace rupture
             list = Utilities::split_fields(text);
           else
             {
-              // A comma separated list of numbers, or else one function
-              // (which may hold commas: if(y < 0, 1, 2)).
-              list = Utilities::split_fields(text, ',');
-              double x;
-              for (const std::string &field : list)
-                if (!read_number(field, x))
+              // A comma separated list of numbers (empty items left out,
+              // as ever), or one function (whose commas are inside
+              // parentheses: if(y < 0, 1, 2)).
+              const std::vector<std::string> items = split_top_level(text);
+              if (items.size() == 1)
+                list = items;
+              else
+                for (const std::string &item : items)
                   {
-                    list = {text};
-                    break;
+                    double x;
+                    AssertThrow(item.empty() || read_number(item, x),
+                                ExcMessage(
+                                  "The entry " + entry + " has the item '" +
+                                  item +
+                                  "' in a list separated by ',', which "
+                                  "holds numbers only. Allowed: numbers "
+                                  "separated by ',', or numbers and "
+                                  "functions of x, y, z separated by ';' "
+                                  "(one per material)."));
+                    if (!item.empty())
+                      list.push_back(item);
                   }
             }
           AssertThrow(list.size() == 1 || list.size() == n,
@@ -83,8 +116,25 @@ namespace rupture
                                      std::to_string(i) + " (" + names[i] +
                                      "). Give a number or a function of x, "
                                      "y, z."));
+              const std::string which = "The entry " + entry + " of material " +
+                                        std::to_string(i) + " (" + names[i] +
+                                        ") is '" + list[i] + "'";
               if (read_number(list[i], number_values[e][i]))
-                continue;
+                {
+                  AssertThrow(std::isfinite(number_values[e][i]),
+                              ExcMessage(which +
+                                         ", which is not a finite number. "
+                                         "Allowed: finite numbers, or "
+                                         "functions of x, y, z."));
+                  continue;
+                }
+              AssertThrow(split_top_level(list[i]).size() == 1,
+                          ExcMessage(which +
+                                     ": a field holds one number or one "
+                                     "function; fields are separated by "
+                                     "';'. Allowed: numbers separated by "
+                                     "',', or numbers and functions of x, y, "
+                                     "z separated by ';'."));
               try
                 {
                   functions[e][i] = Utilities::parse_function<3>(

@@ -157,9 +157,8 @@ namespace rupture
       const MappingQ1<dim>     mapping;
       const QGauss<dim>        gauss(degree + 1);
       const QGaussLobatto<dim> lobatto(degree + 1);
-      std::vector<Point<dim>>  points;
-      for (const unsigned int v : cell->vertex_indices())
-        points.push_back(cell->vertex(v));
+      // (The Gauss-Lobatto points include the vertices.)
+      std::vector<Point<dim>> points;
       for (const Quadrature<dim> *q :
            {static_cast<const Quadrature<dim> *>(&gauss),
             static_cast<const Quadrature<dim> *>(&lobatto)})

@@ -115,6 +115,14 @@ main(int argc, char **argv)
                "Symmetry = orthotropic\n  set Stiffness = C11 = 9e10, C22 = "
                "9e10, C33 = 9e10, C12 = 3e10, C13 = 3e10, C23 = 3e10, C44 = "
                "3e10, C55 = 3e10, C66 = 3e10\nend\n");
+  write("comma_function.prm",
+        base + "subsection Material\n  set Names = a, b\n  set P-wave "
+               "speed = 6000, 5000 + 0.5*y\nend\n");
+  write("density_nan.prm",
+        base + "subsection Material\n  set Density = nan\nend\n");
+  write("function_with_factor.prm",
+        base + "subsection Material\n  set Density = 2700 + 0*x\n  set "
+               "Density factor = 1e4\nend\n");
   write("density_field.prm",
         base + "subsection Material\n  set Names = a, b\n  set Density = "
                "2700; 2700 + w\nend\n");
@@ -250,6 +258,10 @@ main(int argc, char **argv)
   check("density function of an anisotropic material",
         {"anisotropic_density_function.prm"});
   check("density field with an unknown variable", {"density_field.prm"});
+  check("a function in a list separated by commas", {"comma_function.prm"});
+  check("density nan", {"density_nan.prm"});
+  check("density function times a density factor above 1e6",
+        {"function_with_factor.prm"});
   check("anisotropic friction direction normal to the fault",
         {"anisotropic_friction_normal.prm"});
   check("2-D anisotropic material without a mirror plane",

@@ -19,6 +19,11 @@
 //    that of the rock of vs 2500 (on the safe side).
 // 3. The volume output's stress uses the local constants (a column under
 //    gravity whose Poisson's ratio changes with depth).
+// 4. An isotropic material given by functions beside an anisotropic one
+//    (the operator's anisotropic kernel, with Lame's constants per
+//    quadrature point in the function material's lanes): a two-layer box
+//    under gravity, quasi-static and explicit, gives the results of the
+//    same constants as numbers.
 
 #include <deal.II/base/mpi.h>
 
@@ -238,4 +243,58 @@ end
               measured.empty() ? 0. : measured.front(),
               measured.empty() ? 0. : measured.back(),
               error < 1e-6 ? "matched" : "not matched");
+
+  // 4. A transversely isotropic layer over an isotropic one whose
+  // constants are constant functions.
+  {
+    std::ofstream("layers.prm")
+      << "set Dimension = 2\nset Test mode = true\nsubsection Scene\n  set "
+         "Model = gmsh\n  subsection Gmsh\n    set Mesh file = "
+      << source << "../meshes/two_layer_box_2d.msh\n  end\nend\n"
+      << R"(subsection Material
+  set Names = upper, lower
+  set Density = 2500, 3000
+  set P-wave speed = 5000, 6000
+  set S-wave speed = 2887, 3464
+  set Symmetry = transversely isotropic, isotropic
+  set Stiffness = C11 = 6.2e10, C33 = 4.8e10, C13 = 1.9e10, C44 = 1.6e10, C66 = 2.1e10;
+  set Material axes = 1, 1, 0;
+end
+subsection Boundary conditions
+  set Roller = west: x, east: x
+  set Fixed = bottom
+end
+subsection Loads
+  set Gravity = 9.81
+end
+subsection Time integration
+  set Scheme = quasi-static
+  set Time step = 1
+  set End time = 1
+end
+subsection Output
+  set Output interval = -1
+end
+)";
+  }
+  for (const std::string scheme : {"quasi-static", "explicit"})
+    {
+      std::vector<std::string> settings;
+      if (scheme == "explicit")
+        settings = {"Time integration/Scheme=explicit central difference",
+                    "Time integration/Time step=0",
+                    "Time integration/End time=0.05"};
+      tests::run_in("layers-numbers", {"layers.prm"}, settings);
+      settings.push_back("Material/Density=2500; 3000 + 0*x");
+      settings.push_back("Material/P-wave speed=5000; 6000 + 0*y");
+      settings.push_back("Material/S-wave speed=2887; 3464 + 0*x*y");
+      tests::run_in("layers-functions", {"layers.prm"}, settings);
+      const auto a = tests::read_statistics("layers-numbers/statistics");
+      const auto b = tests::read_statistics("layers-functions/statistics");
+      std::printf("anisotropic layer over a function layer, %s: %zu rows, "
+                  "statistics %s to 1e-10\n",
+                  scheme.c_str(),
+                  a.size(),
+                  difference(a, b) < 1e-10 ? "the same" : "differ");
+    }
 }

@@ -28,8 +28,9 @@ namespace rupture
      */
     /**
      * The points at which constants that vary in space are checked on a
-     * cell: its vertices, and its Gauss and Gauss-Lobatto points of
-     * @p degree + 1 per direction (those of the operators' quadratures).
+     * cell: its Gauss and Gauss-Lobatto points of @p degree + 1 per
+     * direction (those of the operators' quadratures; the latter include
+     * the vertices).
      */
     template <int dim>
     std::vector<Point<dim>>
