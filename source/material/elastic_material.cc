@@ -618,7 +618,7 @@ namespace rupture
                     2 * mu + v[1] * v[2] / ((1 + v[2]) * (1 - 2 * v[2]));
                 }
               const double vp = std::sqrt(modulus / v[0]);
-              valid           = valid && std::isfinite(mu) && mu > 0 &&
+              valid = valid && std::isfinite(mu) && std::sqrt(mu / v[0]) > 0 &&
                       std::isfinite(vp) && vp > 0 && vp <= speed_of_light &&
                       v[0] * r >= 1e-3 && v[0] * r <= 1e6 &&
                       vp * std::sqrt(s / r) <= speed_of_light;

@@ -70,13 +70,11 @@ namespace rupture
       density(const types::material_id material, const Point<dim> &p) const;
 
       /**
-       * Collective: check that the factors are positive and finite at the
-       * vertices, the Gauss points and the Gauss-Lobatto points (of
-       * @p degree + 1 per direction) of the locally owned cells of
-       * @p mesh; throws on every process a message naming the entry, the
-       * material and the point otherwise. Also returns the largest of
-       * sqrt(s / r) over those points for each material (1 where both are
-       * numbers), for wave speeds.
+       * Collective: check that the factors are positive and finite at
+       * check_points() of the locally owned cells of @p mesh; throws on every
+       * process a message naming the entry, the material and the point
+       * otherwise. Also returns the largest of sqrt(s / r) over those points
+       * for each material (1 where both are numbers), for wave speeds.
        */
       template <int dim>
       std::vector<double>
