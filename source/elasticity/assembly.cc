@@ -210,10 +210,12 @@ namespace rupture
                     for (const unsigned int q : fv.quadrature_point_indices())
                       {
                         const Tensor<1, dim> z =
-                          (varying ? materials.at(cell->material_id(),
-                                                  fv.quadrature_point(q)) :
-                                     m)
-                            .template boundary_impedance<dim>(
+                          varying ?
+                            materials
+                              .at(cell->material_id(), fv.quadrature_point(q))
+                              .template boundary_impedance<dim>(
+                                fv.normal_vector(q)) :
+                            m.template boundary_impedance<dim>(
                               fv.normal_vector(q));
                         for (unsigned int i = 0; i < n; ++i)
                           {

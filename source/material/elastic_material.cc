@@ -262,6 +262,11 @@ namespace rupture
 
     namespace
     {
+      /// In m/s: wave speeds above it are a unit error.
+      constexpr double speed_of_light = 299792458;
+
+
+
       /// A number as the screen shows it (six digits), not as to_string()'s
       /// fixed-point (300 digits for 1e300).
       std::string
@@ -275,16 +280,16 @@ namespace rupture
 
 
       /**
-       * Lame's constants, the tensor and the wave speeds of an isotropic
-       * material of density @p density from @p a and @p b (P- and S-wave
-       * speeds, or Young's modulus and Poisson's ratio), unchecked.
+       * Density and Lame's constants of an isotropic material of density
+       * @p density from @p a and @p b (P- and S-wave speeds, or Young's
+       * modulus and Poisson's ratio), unchecked.
        */
       void
-      set_isotropic(ElasticConstants &m,
-                    const double      density,
-                    const double      a,
-                    const double      b,
-                    const bool        by_speeds)
+      set_lame(ElasticConstants &m,
+               const double      density,
+               const double      a,
+               const double      b,
+               const bool        by_speeds)
       {
         m.density = density;
         if (by_speeds)
@@ -297,6 +302,19 @@ namespace rupture
             m.mu     = a / (2 * (1 + b));
             m.lambda = a * b / ((1 + b) * (1 - 2 * b));
           }
+      }
+
+
+
+      /// set_lame() and the tensor and wave speeds that follow, unchecked.
+      void
+      set_isotropic(ElasticConstants &m,
+                    const double      density,
+                    const double      a,
+                    const double      b,
+                    const bool        by_speeds)
+      {
+        set_lame(m, density, a, b, by_speeds);
         m.voigt         = isotropic_voigt_matrix(m.lambda, m.mu);
         const double vp = std::sqrt((m.lambda + 2 * m.mu) / m.density);
         const double vs = std::sqrt(m.mu / m.density);
@@ -306,28 +324,124 @@ namespace rupture
 
 
 
-      /// Throws a message naming the entry and @p which unless @p density
-      /// is allowed.
-      void
-      check_density(const double density, const std::string &which)
+      /**
+       * The message for a density not allowed, naming the entry and
+       * which() (" of material 0 (rock)", perhaps with the point); empty if
+       * allowed. which() is called only to write the message.
+       */
+      template <typename Which>
+      std::string
+      density_complaint(const double density, const Which &which)
       {
         // Far outside this range the mass matrix over- or underflows (a
         // density of 1e308 times a cell's volume).
+        if (density >= 1e-3 && density <= 1e6)
+          return "";
         std::ostringstream message;
-        message << "<Material/Density>" << which << " is " << density
+        message << "<Material/Density>" << which() << " is " << density
                 << " kg/m^3. Allowed: densities from 1e-3 to 1e6 kg/m^3 (SI "
                    "units; rock is about 2700).";
-        AssertThrow(density >= 1e-3 && density <= 1e6,
-                    ExcMessage(message.str()));
+        return message.str();
+      }
+
+
+
+      /// Throws density_complaint() unless @p density is allowed.
+      void
+      check_density(const double density, const std::string &which)
+      {
+        const std::string complaint =
+          density_complaint(density, [&]() { return which; });
+        AssertThrow(complaint.empty(), ExcMessage(complaint));
       }
 
 
 
       /**
-       * set_isotropic() with the values checked: throws a message naming
-       * the entry and @p which (" of material 0 (rock)", perhaps with the
-       * point) otherwise.
+       * The one set of rules for isotropic values: the message for the
+       * first of @p density, @p a, @p b (P- and S-wave speeds, or Young's
+       * modulus and Poisson's ratio) that is not allowed, or for constants
+       * that follow from them out of range, naming the entry and which();
+       * empty if all are allowed. which() is called only to write the
+       * message, so that checking many points costs a few operations each.
        */
+      template <typename Which>
+      std::string
+      isotropic_complaint(const double density,
+                          const double a,
+                          const double b,
+                          const bool   by_speeds,
+                          const Which &which)
+      {
+        std::string complaint = density_complaint(density, which);
+        if (!complaint.empty())
+          return complaint;
+        if (by_speeds)
+          {
+            const double vp = a, vs = b;
+            if (!(vs > 0 && std::isfinite(vs)))
+              return "<Material/S-wave speed>" + which() + " is " +
+                     short_number(vs) + ", but it must be > 0 (m/s).";
+            if (!(vp > std::sqrt(2.) * vs && std::isfinite(vp)))
+              return "<Material/P-wave speed>" + which() + " is " +
+                     short_number(vp) +
+                     " m/s, but it must exceed sqrt(2) times the "
+                     "S-wave speed (" +
+                     short_number(std::sqrt(2.) * vs) +
+                     " m/s); otherwise Lame's lambda is negative "
+                     "and Poisson's ratio is < 0 (this program "
+                     "requires 0 < Poisson's ratio < 0.5 when "
+                     "wave speeds are given).";
+          }
+        else
+          {
+            const double E = a, nu = b;
+            if (!(E > 0 && std::isfinite(E)))
+              return "<Material/Young's modulus>" + which() + " is " +
+                     short_number(E) + ", but it must be > 0 (Pa).";
+            if (!(nu > -1 && nu < 0.5))
+              return "<Material/Poisson's ratio>" + which() + " is " +
+                     short_number(nu) +
+                     ", but it must lie in (-1, 0.5); 0.5 "
+                     "is an incompressible material, "
+                     "which this displacement formulation "
+                     "cannot represent.";
+          }
+        // Each value may be fine and their combination overflow (a
+        // density of 1e308 times a squared wave speed).
+        ElasticConstants m;
+        set_lame(m, density, a, b, by_speeds);
+        const double vp = m.p_wave_speed(), vs = m.s_wave_speed();
+        // Wave speeds above the speed of light are a unit error (the
+        // program works in SI units), and they would make the explicit
+        // step, which scales with h / vp, vanishingly small.
+        if (std::isfinite(m.mu) && std::isfinite(m.lambda) &&
+            std::isfinite(vp) && std::isfinite(vs) && vp > 0 && vs > 0 &&
+            vp <= speed_of_light)
+          return "";
+        return "The elastic constants" + which() +
+               " are out of range: from its "
+               "<Material/Density>, <Material/P-wave "
+               "speed> and <Material/S-wave speed> (or, "
+               "by <Material/Parametrization>, "
+               "<Material/Young's modulus> and "
+               "<Material/Poisson's ratio>) (density " +
+               short_number(m.density) +
+               " kg/m^3) follow mu = " + short_number(m.mu) +
+               " Pa, lambda = " + short_number(m.lambda) +
+               " Pa, vp = " + short_number(vp) +
+               " m/s and vs = " + short_number(vs) +
+               " m/s. Allowed: values whose moduli and "
+               "wave speeds are finite and positive, the "
+               "wave speeds below the speed of light (in "
+               "SI units: e.g. 2700 kg/m^3, 6000 and "
+               "3464 m/s).";
+      }
+
+
+
+      /// set_isotropic() with the values checked: throws
+      /// isotropic_complaint() otherwise.
       void
       set_checked_isotropic(ElasticConstants  &m,
                             const double       density,
@@ -336,68 +450,12 @@ namespace rupture
                             const bool         by_speeds,
                             const std::string &which)
       {
-        check_density(density, which);
-        if (by_speeds)
-          {
-            const double vp = a, vs = b;
-            AssertThrow(vs > 0 && std::isfinite(vs),
-                        ExcMessage("<Material/S-wave speed>" + which + " is " +
-                                   short_number(vs) +
-                                   ", but it must be > 0 (m/s)."));
-            AssertThrow(vp > std::sqrt(2.) * vs && std::isfinite(vp),
-                        ExcMessage("<Material/P-wave speed>" + which + " is " +
-                                   short_number(vp) +
-                                   " m/s, but it must exceed sqrt(2) times the "
-                                   "S-wave speed (" +
-                                   short_number(std::sqrt(2.) * vs) +
-                                   " m/s); otherwise Lame's lambda is negative "
-                                   "and Poisson's ratio is < 0 (this program "
-                                   "requires 0 < Poisson's ratio < 0.5 when "
-                                   "wave speeds are given)."));
-          }
-        else
-          {
-            const double E = a, nu = b;
-            AssertThrow(E > 0 && std::isfinite(E),
-                        ExcMessage("<Material/Young's modulus>" + which +
-                                   " is " + short_number(E) +
-                                   ", but it must be > 0 (Pa)."));
-            AssertThrow(nu > -1 && nu < 0.5,
-                        ExcMessage("<Material/Poisson's ratio>" + which +
-                                   " is " + short_number(nu) +
-                                   ", but it must lie in (-1, 0.5); 0.5 "
-                                   "is an incompressible material, "
-                                   "which this displacement formulation "
-                                   "cannot represent."));
-          }
+        const std::string complaint =
+          isotropic_complaint(density, a, b, by_speeds, [&]() {
+            return which;
+          });
+        AssertThrow(complaint.empty(), ExcMessage(complaint));
         set_isotropic(m, density, a, b, by_speeds);
-        // Each value may be fine and their combination overflow (a
-        // density of 1e308 times a squared wave speed).
-        const double vp = m.p_wave_speed(), vs = m.s_wave_speed();
-        // Wave speeds above the speed of light are a unit error (the
-        // program works in SI units), and they would make the explicit
-        // step, which scales with h / vp, vanishingly small.
-        const double speed_of_light = 299792458;
-        AssertThrow(std::isfinite(m.mu) && std::isfinite(m.lambda) &&
-                      std::isfinite(vp) && std::isfinite(vs) && vp > 0 &&
-                      vs > 0 && vp <= speed_of_light,
-                    ExcMessage("The elastic constants" + which +
-                               " are out of range: from its "
-                               "<Material/Density>, <Material/P-wave "
-                               "speed> and <Material/S-wave speed> (or, "
-                               "by <Material/Parametrization>, "
-                               "<Material/Young's modulus> and "
-                               "<Material/Poisson's ratio>) (density " +
-                               short_number(m.density) +
-                               " kg/m^3) follow mu = " + short_number(m.mu) +
-                               " Pa, lambda = " + short_number(m.lambda) +
-                               " Pa, vp = " + short_number(vp) +
-                               " m/s and vs = " + short_number(vs) +
-                               " m/s. Allowed: values whose moduli and "
-                               "wave speeds are finite and positive, the "
-                               "wave speeds below the speed of light (in "
-                               "SI units: e.g. 2700 kg/m^3, 6000 and "
-                               "3464 m/s)."));
       }
 
 
@@ -500,7 +558,7 @@ namespace rupture
                     << " m/s. Allowed: densities from 1e-3 to 1e6 kg/m^3 "
                        "and speeds below the speed of light (SI units).";
             AssertThrow(m.density >= 1e-3 && m.density <= 1e6 &&
-                          v.fastest <= 299792458,
+                          v.fastest <= speed_of_light,
                         ExcMessage(message.str()));
           }
       }
@@ -583,74 +641,51 @@ namespace rupture
         return fastest;
 
       // Constants given as functions: every value allowed at every point
-      // of the material's cells, the factors included. (A test without
-      // messages first: the messages are written for a failing point
-      // only, which keeps this at a few function evaluations per point.)
-      const double speed_of_light = 299792458;
-      std::string  error;
+      // of the material's cells, the factors included, by the rules of
+      // numbers (isotropic_complaint()). Messages are written for a
+      // failing point only, which keeps this at a few function
+      // evaluations per point.
+      std::string error;
       for (const auto &cell : mesh.active_cell_iterators())
         if (cell->is_locally_owned() && error.empty() &&
             cell->material_id() < materials.size() &&
             functions[cell->material_id()])
           for (const Point<dim_> &p : check_points<dim_>(cell, degree))
             {
-              const types::material_id    id = cell->material_id();
-              const std::array<double, 3> v  = fields.values(id, p);
-              const double                s  = factors.stiffness(id, p) *
+              const types::material_id    id    = cell->material_id();
+              const std::array<double, 3> v     = fields.values(id, p);
+              const auto                  which = [&]() {
+                std::ostringstream text;
+                text << " of material " << id << " (" << materials[id].name
+                     << ") at (" << p << ")";
+                return text.str();
+              };
+              error = isotropic_complaint(v[0], v[1], v[2], by_speeds, which);
+              if (!error.empty())
+                break;
+              const double s = factors.stiffness(id, p) *
                                factors.constant_stiffness(id),
                            r = factors.density(id, p) *
                                factors.constant_density(id);
-              double mu, modulus; // (mu and lambda + 2 mu)
-              bool   valid = (v[0] >= 1e-3 && v[0] <= 1e6);
-              if (by_speeds)
+              ElasticConstants m;
+              set_lame(m, v[0], v[1], v[2], by_speeds);
+              const double vp = m.p_wave_speed() * std::sqrt(s / r);
+              if (m.density * r >= 1e-3 && m.density * r <= 1e6 &&
+                  vp <= speed_of_light)
                 {
-                  valid = valid && v[2] > 0 && std::isfinite(v[2]) &&
-                          v[1] > std::sqrt(2.) * v[2] && std::isfinite(v[1]);
-                  mu      = v[0] * v[2] * v[2];
-                  modulus = v[0] * v[1] * v[1];
-                }
-              else
-                {
-                  valid = valid && v[1] > 0 && std::isfinite(v[1]) &&
-                          v[2] > -1 && v[2] < 0.5;
-                  mu = v[1] / (2 * (1 + v[2]));
-                  modulus =
-                    2 * mu + v[1] * v[2] / ((1 + v[2]) * (1 - 2 * v[2]));
-                }
-              const double vp = std::sqrt(modulus / v[0]);
-              valid = valid && std::isfinite(mu) && std::sqrt(mu / v[0]) > 0 &&
-                      std::isfinite(vp) && vp > 0 && vp <= speed_of_light &&
-                      v[0] * r >= 1e-3 && v[0] * r <= 1e6 &&
-                      vp * std::sqrt(s / r) <= speed_of_light;
-              if (valid)
-                {
-                  fastest = std::max(fastest, vp * std::sqrt(s / r));
+                  fastest = std::max(fastest, vp);
                   continue;
                 }
-              std::ostringstream which;
-              which << " of material " << id << " (" << materials[id].name
-                    << ") at (" << p << ")";
-              try
-                {
-                  ElasticConstants m;
-                  set_checked_isotropic(
-                    m, v[0], v[1], v[2], by_speeds, which.str());
-                  std::ostringstream message;
-                  message << "<Material/Stiffness factor> and <Material/"
-                             "Density factor>"
-                          << which.str() << " make its density " << v[0] * r
-                          << " kg/m^3 and its P-wave speed "
-                          << vp * std::sqrt(s / r)
-                          << " m/s. Allowed: densities from 1e-3 to 1e6 "
-                             "kg/m^3 and speeds below the speed of light "
-                             "(SI units).";
-                  AssertThrow(false, ExcMessage(message.str()));
-                }
-              catch (const ExceptionBase &e)
-                {
-                  error = Utilities::message_of(e);
-                  break;
-                }
+              std::ostringstream message;
+              message << "<Material/Stiffness factor> and <Material/"
+                         "Density factor>"
+                      << which() << " make its density " << m.density * r
+                      << " kg/m^3 and its P-wave speed " << vp
+                      << " m/s. Allowed: densities from 1e-3 to 1e6 "
+                         "kg/m^3 and speeds below the speed of light "
+                         "(SI units).";
+              error = message.str();
+              break;
             }
       Utilities::throw_if_any(error, communicator);
       return dealii::Utilities::MPI::max(fastest, communicator);
@@ -689,7 +724,6 @@ namespace rupture
         m.speeds_2d = {std::numeric_limits<double>::quiet_NaN(),
                        std::numeric_limits<double>::quiet_NaN()};
       const SpeedRange  &s = (dim == 2 ? m.speeds_2d : m.speeds_3d);
-      const double       speed_of_light = 299792458;
       std::ostringstream message;
       message << "The stiffness given by <Material/Stiffness>" << which
               << " with its <Material/Density> (" << m.density

@@ -1,5 +1,6 @@
 #include <rupture/base/utilities.h>
 #include <rupture/material/isotropic_fields.h>
+#include <rupture/material/spatial_factors.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -11,25 +12,6 @@ namespace rupture
   {
     namespace
     {
-      /// The text as a number, if it is one (surrounding blanks allowed).
-      bool
-      read_number(const std::string &text, double &value)
-      {
-        const auto first = text.find_first_not_of(" \t");
-        if (first == std::string::npos)
-          return false;
-        const auto   last    = text.find_last_not_of(" \t");
-        std::string  trimmed = text.substr(first, last - first + 1);
-        char        *end     = nullptr;
-        const double x       = std::strtod(trimmed.c_str(), &end);
-        if (end != trimmed.c_str() + trimmed.size())
-          return false;
-        value = x;
-        return true;
-      }
-
-
-
       /// @p text split at the commas outside parentheses, trimmed.
       std::vector<std::string>
       split_top_level(const std::string &text)
@@ -200,9 +182,7 @@ namespace rupture
     std::array<double, 3>
     IsotropicFields::values(const unsigned int i, const Point<dim> &p) const
     {
-      Point<3> x;
-      for (unsigned int d = 0; d < dim; ++d)
-        x[d] = p[d];
+      const Point<3>        x = padded(p);
       std::array<double, 3> v;
       for (unsigned int e = 0; e < 3; ++e)
         v[e] =

@@ -14,31 +14,21 @@ namespace rupture
 {
   namespace Material
   {
-    namespace
+    bool
+    read_number(const std::string &text, double &value)
     {
-      /// The text as a number, if it is one.
-      bool
-      as_number(const std::string &text, double &value)
-      {
-        if (text.empty())
-          return false;
-        char *end = nullptr;
-        value     = std::strtod(text.c_str(), &end);
-        return end == text.c_str() + text.size();
-      }
-
-
-
-      template <int dim>
-      Point<3>
-      padded(const Point<dim> &p)
-      {
-        Point<3> x;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] = p[d];
-        return x;
-      }
-    } // namespace
+      const auto first = text.find_first_not_of(" \t");
+      if (first == std::string::npos)
+        return false;
+      const auto        last    = text.find_last_not_of(" \t");
+      const std::string trimmed = text.substr(first, last - first + 1);
+      char             *end     = nullptr;
+      const double      x       = std::strtod(trimmed.c_str(), &end);
+      if (end != trimmed.c_str() + trimmed.size())
+        return false;
+      value = x;
+      return true;
+    }
 
 
 
@@ -76,7 +66,7 @@ namespace rupture
                                         "> of material " + std::to_string(i) +
                                         " (" + names[i] + ")";
               double value = 1;
-              if (fields[i].empty() || as_number(fields[i], value))
+              if (fields[i].empty() || read_number(fields[i], value))
                 {
                   AssertThrow(std::isfinite(value) && value > 0 && value < 1e10,
                               ExcMessage(which + " is " + fields[i] +

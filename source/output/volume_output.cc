@@ -497,11 +497,17 @@ namespace rupture
                     reference_gradient * invert(jacobian);
                   // (Constants that vary in space: those at the cell's
                   // centre.)
-                  const Material::ElasticConstants m =
-                    materials.varies_in_space() ?
-                      materials.at(cell->material_id(), cell->center()) :
-                      materials.get(cell->material_id());
-                  const Tensor<2, dim> strain =
+                  const Material::ElasticConstants *constants =
+                    &materials.get(cell->material_id());
+                  Material::ElasticConstants at_centre;
+                  if (materials.varies_in_space())
+                    {
+                      at_centre =
+                        materials.at(cell->material_id(), cell->center());
+                      constants = &at_centre;
+                    }
+                  const Material::ElasticConstants &m = *constants;
+                  const Tensor<2, dim>              strain =
                     0.5 * (gradient + transpose(gradient));
                   Tensor<2, dim> stress =
                     m.isotropic() ?

@@ -14,7 +14,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include "../tests.h"
+#include "mms_ladder.h"
 
 #include <cmath>
 #include <cstdio>
@@ -40,33 +40,11 @@ main(int argc, char **argv)
                     c.scheme.c_str(),
                     c.stiffness.c_str(),
                     degree);
-        std::printf("  %-8s %-12s %s\n", "h", "L2 error", "order");
-        double previous = 0;
-        for (unsigned int level = 0; level < (degree == 1 ? 4u : 3u); ++level)
-          {
-            const std::string out = "output-" + std::to_string(level);
-            tests::run_in(out,
-                          {prm},
-                          {"Time integration/Scheme=" + c.scheme,
-                           "Time integration/Time step=" +
-                             std::string(c.scheme[0] == 'e' ? "0" : "0.1"),
-                           "Discretization/Stiffness operator=" + c.stiffness,
-                           "Discretization/Polynomial degree=" +
-                             std::to_string(degree),
-                           "Discretization/Initial global refinement=" +
-                             std::to_string(level)});
-            const auto   rows  = tests::read_statistics(out + "/statistics");
-            const double error = rows.empty() ? -1 : rows.back().back();
-            const double h     = 0.25 / (1 << level);
-            if (level == 0)
-              std::printf("  %-8.5f %-12.3e -\n", h, error);
-            else
-              std::printf("  %-8.5f %-12.3e %.2f\n",
-                          h,
-                          error,
-                          std::log2(previous / error));
-            previous = error;
-          }
+        tests::print_mms_ladder(prm,
+                                c.scheme,
+                                {"Discretization/Stiffness operator=" +
+                                 c.stiffness},
+                                degree);
       }
 
   // The same body force with the P-wave speed of a constant Poisson's

@@ -26,6 +26,23 @@ namespace rupture
      * given as a number is folded into the material's constants when they
      * are read (ElasticMaterials), so only functions are evaluated later.
      */
+    /// Whether @p text (blanks around it allowed) is a number; if so, it is
+    /// stored in @p value.
+    bool
+    read_number(const std::string &text, double &value);
+
+    /// @p p with zeros for the missing coordinates: the argument of a
+    /// function of x, y, z (z = 0 in 2-D).
+    template <int dim>
+    inline Point<3>
+    padded(const Point<dim> &p)
+    {
+      Point<3> x;
+      for (unsigned int d = 0; d < dim; ++d)
+        x[d] = p[d];
+      return x;
+    }
+
     /**
      * The points at which constants that vary in space are checked on a
      * cell: its Gauss and Gauss-Lobatto points of @p degree + 1 per
