@@ -2,6 +2,7 @@
 #include <rupture/adaptivity/front_criterion.h>
 #include <rupture/adaptivity/gather.h>
 #include <rupture/adaptivity/process_zone_criterion.h>
+#include <rupture/adaptivity/wavefield_criterion.h>
 #include <rupture/fault/fault.h>
 
 #include <deal.II/base/mpi.h>
@@ -24,6 +25,20 @@ namespace rupture
       {
         return std::pow(face->measure(), 1. / (dim - 1));
       }
+
+      /// One decision of two criteria: refine if one asks for it, coarsen
+      /// only if both allow it.
+      Decision
+      combined(const Decision a, const Decision b)
+      {
+        if (a == Decision::refine || b == Decision::refine)
+          return Decision::refine;
+        if (a == Decision::coarsen && b == Decision::coarsen)
+          return Decision::coarsen;
+        return Decision::keep;
+      }
+
+
 
       /// The ancestor of @p cell on level @p base (the cell itself if it
       /// is there): where the process-zone criterion asks.
@@ -235,20 +250,37 @@ namespace rupture
 
 
     template <int dim>
+    double
+    FaultRefinement<dim>::evaluate_wavefield(
+      const dealii::DoFHandler<dim>               &dofs,
+      const dealii::TrilinosWrappers::MPI::Vector &velocity)
+    {
+      wave = std::make_unique<WavefieldCriterion<dim>>(
+        dofs, velocity, parameters.wavefield_threshold);
+      return wave->largest();
+    }
+
+
+
+    template <int dim>
     bool
     FaultRefinement<dim>::flag(const bool coarsen, const double n_dofs)
     {
+      const bool fault_criteria =
+        parameters.follow_front || parameters.process_zone;
       for (const auto &cell : triangulation.active_cell_iterators())
         if (cell->is_locally_owned())
           {
             const unsigned int level = cell->level();
             const unsigned int base  = base_level(cell);
-            // A cell of the fault is judged at its fault faces, a cell
-            // away from it at its centre (only coarsened).
+            // By the fault's criteria, a cell of the fault is judged at
+            // its fault faces, a cell away from it at its centre (only
+            // coarsened).
             bool     at_the_fault = false;
             Decision decision     = Decision::coarsen;
             for (const auto f : cell->face_indices())
-              if (at_fault(cell, f) && !cell->neighbor(f)->has_children())
+              if (fault_criteria && at_fault(cell, f) &&
+                  !cell->neighbor(f)->has_children())
                 {
                   at_the_fault              = true;
                   const unsigned int finest = finest_fault_level(cell, f);
@@ -270,11 +302,17 @@ namespace rupture
             if (!at_the_fault)
               decision = front->decide(
                 cell->center(), cell->diameter(), level, base, base);
+            if (wave)
+              decision = combined(
+                decision,
+                wave->decide(cell, base, base + parameters.wavefield_levels));
             if (decision == Decision::refine)
               cell->set_refine_flag();
             else if (decision == Decision::coarsen && coarsen)
               cell->set_coarsen_flag();
           }
+      // The wavefield's indicators belong to this mesh.
+      wave.reset();
       // Coarsening flags of incomplete families go.
       triangulation.prepare_coarsening_and_refinement();
       held = false;

@@ -18,7 +18,8 @@ namespace rupture
         prm.declare_entry(
           "Criteria",
           "",
-          Patterns::List(Patterns::Selection("rupture front|process zone")),
+          Patterns::List(
+            Patterns::Selection("rupture front|process zone|wavefield")),
           "What the mesh follows during the run; empty: the mesh stays as "
           "set up. \"rupture front\": the cells at the fault (on both sides) "
           "are refined <Levels> more times where a fault node slips faster "
@@ -36,7 +37,14 @@ namespace rupture
           "L), its strength drop Delta per unit pressure (mu_s - mu_d, b) "
           "and the fault pressure p; cells finer than needed are coarsened. "
           "Both together: the front's band is refined only as deep as the "
-          "process zone needs. The fields, the fault's state and the "
+          "process zone needs. \"wavefield\": cells anywhere are refined, "
+          "at most <Wavefield levels> times, where the waves are resolved "
+          "less well than <Wavefield threshold> asks (a Kelly-type "
+          "indicator of the velocity that leaves out the fault's faces), "
+          "and coarsened where the waves have left; in dynamic phases only. "
+          "With several criteria a cell is refined if one asks for it and "
+          "coarsened only if all allow it. The fields, the fault's state "
+          "and the "
           "outputs' series carry over; the time step of the explicit scheme "
           "follows the stable step of the new mesh. Multigrid "
           "preconditioners are refused on such meshes.");
@@ -87,6 +95,22 @@ namespace rupture
           "A node stays active for this time (s) after its rupture even "
           "when it slips slower than the threshold; negative: for ever, so "
           "that the ruptured part of the fault keeps its fine cells.");
+        prm.declare_entry(
+          "Wavefield threshold",
+          "1e-3",
+          Patterns::Double(0),
+          "Criterion \"wavefield\": a cell is refined where the jump of the "
+          "velocity's normal derivative across its inner faces (root mean "
+          "square over them, in 1/s: a jump in strain rate; the faces "
+          "between the fault's sides left out) exceeds this, and coarsened "
+          "where its parent's (estimated as 2^degree times its own) is below "
+          "half of it. The log gives the largest value at each adaptation, "
+          "for choosing it: a fraction of the strain rates that matter.");
+        prm.declare_entry("Wavefield levels",
+                          "1",
+                          Patterns::Integer(1, 8),
+                          "Criterion \"wavefield\": how many times a cell is "
+                          "refined at most beyond the base mesh.");
         prm.declare_entry("Extra band",
                           "0",
                           Patterns::Double(0),
@@ -106,11 +130,14 @@ namespace rupture
         dealii::Utilities::split_string_list(prm.get("Criteria"));
       follow_front = false;
       process_zone = false;
+      wavefield    = false;
       for (const auto &c : criteria)
         if (c == "rupture front")
           follow_front = true;
         else if (c == "process zone")
           process_zone = true;
+        else if (c == "wavefield")
+          wavefield = true;
       interval            = prm.get_integer("Interval");
       time_interval       = prm.get_double("Time interval");
       nodes_per_zone      = prm.get_double("Nodes per process zone");
@@ -119,6 +146,8 @@ namespace rupture
       slip_rate_threshold = prm.get_double("Slip rate threshold");
       coarsening_delay    = prm.get_double("Coarsening delay");
       extra_band          = prm.get_double("Extra band");
+      wavefield_threshold = prm.get_double("Wavefield threshold");
+      wavefield_levels    = prm.get_integer("Wavefield levels");
       prm.leave_subsection();
     }
 

@@ -5,6 +5,8 @@
 #include <rupture/discretization/discretization.h>
 
 #include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 
 #include <algorithm>
@@ -59,8 +61,18 @@ namespace rupture
               here.push_back(&v);
             }
           transfer->interpolate(here);
+          // As before the first transfer: hanging DoFs follow their
+          // constraints, or a DoF that a cell coarsened next to a finer one
+          // made hanging gets two values where it stops hanging.
+          AffineConstraints<double> hanging(relevant);
+          DoFTools::make_hanging_node_constraints(dofs, hanging);
+          hanging.close();
           for (auto &v : values)
-            v.update_ghost_values();
+            {
+              v.update_ghost_values();
+              hanging.distribute(v);
+              v.update_ghost_values();
+            }
           transfer = std::make_unique<Transfer>(dofs);
           transfer->prepare_for_coarsening_and_refinement(in);
           mesh.execute_coarsening_and_refinement();

@@ -1,7 +1,8 @@
 // A mesh that follows the rupture (<Mesh refinement>): between two steps
 // the cells of the fault are refined where it slips and ahead of its
-// front and coarsened behind it; the state moves to the new mesh and the
-// operators, the time step and the integrator are set up again.
+// front and coarsened behind it, and cells anywhere where the waves are
+// poorly resolved (and coarsened after they left); the state moves to the new
+// mesh and the operators, the time step and the integrator are set up again.
 
 #include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/fault/fault.h>
@@ -31,6 +32,15 @@ namespace rupture
       fastest_wave_speed,
       state.time_step,
       current_scheme() == TimeIntegration::Scheme::explicit_central_difference);
+
+    // The wavefield's criterion in dynamic phases (a quasi-static phase's
+    // velocity is the loading rate's).
+    double largest_indicator = -1;
+    if (mesh_refinement.wavefield &&
+        current_scheme() != TimeIntegration::Scheme::quasi_static)
+      largest_indicator = fault_refinement->evaluate_wavefield(
+        discretization.dof_handler(),
+        discretization.ghosted_copy(0, state.velocity));
 
     const double       energy_before = energy.kinetic + energy.strain;
     const unsigned int pairs_before  = fault->n_split_nodes();
@@ -130,8 +140,10 @@ namespace rupture
           << (n_without > 0 ?
                 ", " + std::to_string(n_without) + " without an old pair near" :
                 std::string())
-          << "), time step " << std::setprecision(4) << state.time_step
-          << " s\n";
+          << "), time step " << std::setprecision(4) << state.time_step << " s";
+    if (largest_indicator >= 0)
+      pcout << ", largest wavefield indicator " << largest_indicator << " 1/s";
+    pcout << "\n";
     return true;
   }
 

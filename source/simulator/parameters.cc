@@ -524,9 +524,18 @@ namespace rupture
                                " s."));
         AssertThrow(fault != nullptr,
                     ExcMessage("<Mesh refinement/Criteria> (rupture front, "
-                               "process zone) follows a fault, but <Fault/"
-                               "Model> = none. Allowed: a fault model, or no "
+                               "process zone, wavefield) adapts the mesh of "
+                               "a run with a fault, but <Fault/Model> = "
+                               "none. Allowed: a fault model, or no "
                                "criterion."));
+        AssertThrow(!mesh_refinement.wavefield ||
+                      time_parameters.scheme !=
+                        TimeIntegration::Scheme::quasi_static,
+                    ExcMessage("<Mesh refinement/Criteria> = wavefield "
+                               "follows waves, which a quasi-static run "
+                               "(<Time integration/Scheme> = quasi-static) "
+                               "has none of. Allowed: rupture front and "
+                               "process zone, or a dynamic scheme."));
         AssertThrow(!mesh_refinement.process_zone ||
                       fault->friction().has_process_zone_width(),
                     ExcMessage("<Mesh refinement/Criteria> = process zone "

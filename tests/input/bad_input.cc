@@ -336,6 +336,18 @@ main(int argc, char **argv)
          "Fault/Plane normal=0, 1",
          "--set",
          "Fault/Friction law=cochard madariaga"});
+  check("the wavefield criterion in a quasi-static run",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=wavefield",
+         "--set",
+         "Time integration/Scheme=quasi-static",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 500",
+         "--set",
+         "Fault/Plane normal=0, 1"});
   check("a DoF budget below the base mesh",
         {"valid.prm",
          "--set",

@@ -5,6 +5,8 @@
 
 #include <deal.II/base/point.h>
 #include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <functional>
 #include <memory>
@@ -26,19 +28,23 @@ namespace rupture
     class FrontCriterion;
     template <int dim>
     class ProcessZoneCriterion;
+    template <int dim>
+    class WavefieldCriterion;
 
     /**
      * Which cells a mesh that follows the rupture refines and coarsens
      * (the criteria of <Mesh refinement>: the rupture front, the process
-     * zone), within which limits (the levels, the DoF budget), and how
-     * many adaptations it made. It only flags cells: the caller executes
-     * the refinement, carries the state over and sets everything up again,
-     * then says so (mesh_changed()).
+     * zone, the wavefield), within which limits (the levels, the DoF budget),
+     * and how many adaptations it made. It only flags cells: the caller
+     * executes the refinement, carries the state over and sets everything up
+     * again, then says so (mesh_changed()).
      *
-     * A cell at the fault is judged at its fault faces (both cells of a
-     * face alike), a cell away from it at its centre (only coarsened, to
-     * its base level: the level of the mesh as set up, which @p base_level
-     * gives).
+     * By the fault's criteria, a cell at the fault is judged at its fault
+     * faces (both cells of a face alike), a cell away from it at its centre
+     * (only coarsened, to its base level: the level of the mesh as set up,
+     * which @p base_level gives). The wavefield criterion judges every cell
+     * by itself; a cell is refined if one criterion asks for it and
+     * coarsened only if all allow it.
      */
     template <int dim>
     class FaultRefinement
@@ -84,6 +90,16 @@ namespace rupture
                const double p_wave_speed,
                const double time_step,
                const bool   explicit_scheme);
+
+      /**
+       * Evaluate the criterion "wavefield" on the mesh as it is now, from
+       * the velocity @p velocity (with ghost entries) on @p dofs; the next
+       * flag() uses it and then forgets it (it refines one level per
+       * adaptation). Returns the largest indicator (1/s). Collective.
+       */
+      double
+      evaluate_wavefield(const dealii::DoFHandler<dim>               &dofs,
+                         const dealii::TrilinosWrappers::MPI::Vector &velocity);
 
       /**
        * Flag the cells for one level by the evaluated criteria, coarsening
@@ -174,6 +190,7 @@ namespace rupture
       /// What evaluate() found.
       std::unique_ptr<ProcessZoneCriterion<dim>> zone;
       std::unique_ptr<FrontCriterion<dim>>       front;
+      std::unique_ptr<WavefieldCriterion<dim>>   wave;
       bool                                       any_active = false;
 
       mutable std::optional<std::pair<unsigned int, bool>> levels_now;

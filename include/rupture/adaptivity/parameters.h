@@ -27,6 +27,15 @@ namespace rupture
       /// until <Nodes per process zone> node spacings fit into the friction
       /// law's process zone (with "rupture front": that deep only).
       bool process_zone = false;
+      /// <Criteria> contains "wavefield": the cells are refined where the
+      /// velocity's normal derivative jumps across their faces by more
+      /// than <Wavefield threshold> (WavefieldCriterion).
+      bool wavefield = false;
+      /// The jump (root mean square over a cell's faces) in 1/s above
+      /// which "wavefield" refines a cell.
+      double wavefield_threshold = 1e-3;
+      /// Levels above the base mesh that "wavefield" refines to.
+      unsigned int wavefield_levels = 1;
       /// Steps between two adaptations of the mesh.
       unsigned int interval = 10;
       /// Time between two adaptations (s); 0: <Interval> steps.
@@ -54,7 +63,7 @@ namespace rupture
       bool
       enabled() const
       {
-        return follow_front || process_zone;
+        return follow_front || process_zone || wavefield;
       }
 
       /// Whether the mesh is adapted after step @p step of a phase (its

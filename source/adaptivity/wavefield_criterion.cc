@@ -1,0 +1,168 @@
+#include <rupture/adaptivity/wavefield_criterion.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/hp/q_collection.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rupture
+{
+  namespace Adaptivity
+  {
+    namespace
+    {
+      /// The gradients of the displacement-like field @p v of the cell
+      /// that @p values was set up for (its side's component group).
+      template <int dim>
+      void
+      gradients_of(const dealii::FEValuesBase<dim>             &values,
+                   const dealii::TrilinosWrappers::MPI::Vector &v,
+                   const unsigned int                           side,
+                   std::vector<dealii::Tensor<2, dim>>         &out)
+      {
+        out.resize(values.n_quadrature_points);
+        values[dealii::FEValuesExtractors::Vector(side * dim)]
+          .get_function_gradients(v, out);
+      }
+    } // namespace
+
+
+
+    template <int dim>
+    WavefieldCriterion<dim>::WavefieldCriterion(
+      const dealii::DoFHandler<dim>               &dofs,
+      const dealii::TrilinosWrappers::MPI::Vector &velocity,
+      const double                                 threshold)
+      : threshold(threshold)
+      , degree(dofs.get_fe_collection().max_degree())
+      , indicator(dofs.get_triangulation().n_active_cells())
+    {
+      using namespace dealii;
+      const hp::FECollection<dim> &elements = dofs.get_fe_collection();
+      hp::QCollection<dim - 1>     quadratures;
+      for (unsigned int i = 0; i < elements.size(); ++i)
+        quadratures.push_back(QGauss<dim - 1>(degree + 1));
+      const UpdateFlags flags = update_gradients | update_normal_vectors |
+                                update_quadrature_points | update_JxW_values;
+      hp::FEFaceValues<dim> own_face(elements, quadratures, flags),
+        other_face(elements, quadratures, flags);
+      hp::FESubfaceValues<dim> own_subface(elements, quadratures, flags),
+        other_subface(elements, quadratures, flags);
+      std::vector<Tensor<2, dim>> own, other;
+      // The cell's side of the fault, and its sums over its faces.
+      unsigned int side     = 0;
+      double       integral = 0, area = 0;
+
+      // The jump's square integrated over one face (or subface) seen from
+      // both cells, their quadrature points matched by place.
+      const auto add_jump = [&](const FEValuesBase<dim> &a,
+                                const FEValuesBase<dim> &b) {
+        gradients_of(a, velocity, side, own);
+        gradients_of(b, velocity, side, other);
+        for (unsigned int q = 0; q < a.n_quadrature_points; ++q)
+          {
+            unsigned int nearest = 0;
+            double       best    = std::numeric_limits<double>::max();
+            for (unsigned int k = 0; k < b.n_quadrature_points; ++k)
+              {
+                const double d =
+                  a.quadrature_point(q).distance_square(b.quadrature_point(k));
+                if (d < best)
+                  {
+                    best    = d;
+                    nearest = k;
+                  }
+              }
+            const Tensor<1, dim> jump =
+              (own[q] - other[nearest]) * a.normal_vector(q);
+            integral += jump.norm_square() * a.JxW(q);
+            area += a.JxW(q);
+          }
+      };
+
+      double largest = 0;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            side     = cell->active_fe_index();
+            integral = 0;
+            area     = 0;
+            for (const unsigned int f : cell->face_indices())
+              {
+                if (cell->at_boundary(f))
+                  continue;
+                const auto neighbor = cell->neighbor(f);
+                if (neighbor->has_children())
+                  {
+                    // Finer neighbours: one subface each.
+                    for (unsigned int s = 0; s < cell->face(f)->n_children();
+                         ++s)
+                      {
+                        const auto child =
+                          cell->neighbor_child_on_subface(f, s);
+                        if (child->active_fe_index() != side)
+                          continue;
+                        own_subface.reinit(cell, f, s);
+                        other_face.reinit(child, cell->neighbor_of_neighbor(f));
+                        add_jump(own_subface.get_present_fe_values(),
+                                 other_face.get_present_fe_values());
+                      }
+                    continue;
+                  }
+                if (neighbor->active_fe_index() != side)
+                  continue;
+                own_face.reinit(cell, f);
+                if (cell->neighbor_is_coarser(f))
+                  {
+                    const auto [face, subface] =
+                      cell->neighbor_of_coarser_neighbor(f);
+                    other_subface.reinit(neighbor, face, subface);
+                    add_jump(own_face.get_present_fe_values(),
+                             other_subface.get_present_fe_values());
+                  }
+                else
+                  {
+                    other_face.reinit(neighbor, cell->neighbor_of_neighbor(f));
+                    add_jump(own_face.get_present_fe_values(),
+                             other_face.get_present_fe_values());
+                  }
+              }
+            const double value = area > 0 ? std::sqrt(integral / area) : 0.;
+            indicator[cell->active_cell_index()] = value;
+            largest                              = std::max(largest, value);
+          }
+      largest_indicator = dealii::Utilities::MPI::max(
+        largest, dofs.get_triangulation().get_communicator());
+    }
+
+
+
+    template <int dim>
+    Decision
+    WavefieldCriterion<dim>::decide(
+      const typename dealii::Triangulation<dim>::cell_iterator &cell,
+      const unsigned int                                        base_level,
+      const unsigned int finest_level) const
+    {
+      const double       value = indicator[cell->active_cell_index()];
+      const unsigned int level = cell->level();
+      if (level < finest_level && value > threshold)
+        return Decision::refine;
+      if (level > base_level &&
+          std::ldexp(value, static_cast<int>(degree)) < 0.5 * threshold)
+        return Decision::coarsen;
+      return Decision::keep;
+    }
+
+
+
+    template class WavefieldCriterion<2>;
+    template class WavefieldCriterion<3>;
+  } // namespace Adaptivity
+} // namespace rupture
