@@ -88,6 +88,18 @@ namespace rupture
 
 
     template <int dim>
+    bool
+    FaultRefinement<dim>::touches_fault(const CellIterator &cell) const
+    {
+      for (const auto f : cell->face_indices())
+        if (at_fault(cell, f))
+          return true;
+      return false;
+    }
+
+
+
+    template <int dim>
     std::unique_ptr<ProcessZoneCriterion<dim>>
     FaultRefinement<dim>::process_zone_criterion() const
     {
@@ -241,10 +253,15 @@ namespace rupture
                   }
           reach = dealii::Utilities::MPI::max(reach, communicator);
         }
+      // With the wavefield criterion the step follows cells anywhere: its
+      // coarsening (one level per adaptation) may double the step, so the
+      // band is that of twice the present step.
       front = std::make_unique<FrontCriterion<dim>>(
         active,
-        band_for(std::ldexp(time_step,
-                            -static_cast<int>(reach - fault_levels().first))));
+        parameters.wavefield ?
+          band_for(2 * time_step) :
+          band_for(std::ldexp(
+            time_step, -static_cast<int>(reach - fault_levels().first))));
     }
 
 
@@ -303,9 +320,17 @@ namespace rupture
               decision = front->decide(
                 cell->center(), cell->diameter(), level, base, base);
             if (wave)
-              decision = combined(
-                decision,
-                wave->decide(cell, base, base + parameters.wavefield_levels));
+              {
+                // Both cells of a fault face must stay alike, and the
+                // indicator of the cell across is another process's: at
+                // the fault the wavefield refines (the other side follows)
+                // but leaves coarsening to the fault's criteria.
+                Decision of_wave =
+                  wave->decide(cell, base, base + parameters.wavefield_levels);
+                if (of_wave == Decision::coarsen && touches_fault(cell))
+                  of_wave = Decision::keep;
+                decision = combined(decision, of_wave);
+              }
             if (decision == Decision::refine)
               cell->set_refine_flag();
             else if (decision == Decision::coarsen && coarsen)

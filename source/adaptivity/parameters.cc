@@ -102,7 +102,8 @@ namespace rupture
           "Criterion \"wavefield\": a cell is refined where the jump of the "
           "velocity's normal derivative across its inner faces (root mean "
           "square over them, in 1/s: a jump in strain rate; the faces "
-          "between the fault's sides left out) exceeds this, and coarsened "
+          "between the fault plane's sides left out) exceeds this, and "
+          "coarsened (cells at the fault: by the fault's criteria only) "
           "where its parent's (estimated as 2^degree times its own) is below "
           "half of it. The log gives the largest value at each adaptation, "
           "for choosing it: a fraction of the strain rates that matter.");

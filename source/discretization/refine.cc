@@ -64,13 +64,12 @@ namespace rupture
           // As before the first transfer: hanging DoFs follow their
           // constraints, or a DoF that a cell coarsened next to a finer one
           // made hanging gets two values where it stops hanging.
-          AffineConstraints<double> hanging(relevant);
-          DoFTools::make_hanging_node_constraints(dofs, hanging);
-          hanging.close();
+          AffineConstraints<double> constraints(relevant);
+          DoFTools::make_hanging_node_constraints(dofs, constraints);
+          constraints.close();
           for (auto &v : values)
             {
-              v.update_ghost_values();
-              hanging.distribute(v);
+              constraints.distribute(v);
               v.update_ghost_values();
             }
           transfer = std::make_unique<Transfer>(dofs);

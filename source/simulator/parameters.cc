@@ -529,6 +529,13 @@ namespace rupture
                                "none. Allowed: a fault model, or no "
                                "criterion."));
         AssertThrow(!mesh_refinement.wavefield ||
+                      mesh_refinement.wavefield_threshold > 0,
+                    ExcMessage("<Mesh refinement/Wavefield threshold> is 0, "
+                               "which would refine every cell that moves at "
+                               "all. Allowed: a positive jump in strain rate "
+                               "(1/s); the log gives the largest at each "
+                               "adaptation."));
+        AssertThrow(!mesh_refinement.wavefield ||
                       time_parameters.scheme !=
                         TimeIntegration::Scheme::quasi_static,
                     ExcMessage("<Mesh refinement/Criteria> = wavefield "

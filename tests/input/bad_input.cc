@@ -348,6 +348,18 @@ main(int argc, char **argv)
          "Fault/Plane point=0, 500",
          "--set",
          "Fault/Plane normal=0, 1"});
+  check("a wavefield threshold of 0",
+        {"valid.prm",
+         "--set",
+         "Mesh refinement/Criteria=wavefield",
+         "--set",
+         "Mesh refinement/Wavefield threshold=0",
+         "--set",
+         "Fault/Model=penalty contact",
+         "--set",
+         "Fault/Plane point=0, 500",
+         "--set",
+         "Fault/Plane normal=0, 1"});
   check("a DoF budget below the base mesh",
         {"valid.prm",
          "--set",
