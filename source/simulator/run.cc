@@ -13,10 +13,12 @@
 #include <boost/property_tree/xml_parser.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace rupture
@@ -241,6 +243,82 @@ namespace rupture
         prm.leave_subsection();
     }
 
+    /**
+     * A communicator of its own for agreeing on an unexpected failure
+     * (end_unexpected()), so that its collective operation never meets
+     * another one of the run.
+     */
+    class FailureChannel
+    {
+    public:
+      explicit FailureChannel(const MPI_Comm communicator)
+      {
+        MPI_Comm_dup(communicator, &channel);
+      }
+      ~FailureChannel()
+      {
+        MPI_Comm_free(&channel);
+      }
+      MPI_Comm
+      get() const
+      {
+        return channel;
+      }
+
+    private:
+      MPI_Comm channel;
+    };
+
+
+
+    /**
+     * The end of a run that an exception outside the program's own checks
+     * stopped (the C++ library's, such as std::bad_alloc or a string
+     * too long): raised on every process (an input that fails alike
+     * everywhere), or on one only, whose partners would then wait in their
+     * next collective operation for ever. The processes that caught it
+     * meet in a barrier of @p channel for up to a minute: if all come, the
+     * first process says what happened and the run ends with an error as
+     * usual; if not, the process says so, naming itself, and aborts the
+     * run (MPI_Abort), so that the job ends instead of hanging.
+     */
+    void
+    end_unexpected(const std::string &what, const FailureChannel &channel)
+    {
+      const MPI_Comm     comm = channel.get();
+      const unsigned int n    = dealii::Utilities::MPI::n_mpi_processes(comm);
+      const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
+      if (n == 1)
+        {
+          std::cerr << "\nError: " << what << std::endl;
+          return;
+        }
+      MPI_Request request;
+      MPI_Ibarrier(comm, &request);
+      int        all   = 0;
+      const auto start = std::chrono::steady_clock::now();
+      while (!all && std::chrono::steady_clock::now() - start <
+                       std::chrono::seconds(60))
+        {
+          MPI_Test(&request, &all, MPI_STATUS_IGNORE);
+          if (!all)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+      if (all)
+        {
+          if (rank == 0)
+            std::cerr << "\nError: " << what << std::endl;
+          return;
+        }
+      std::cerr << "\nError on process " << rank << " of " << n << ": " << what
+                << ". The other processes did not fail with it and cannot "
+                   "go on: the run is aborted (MPI_Abort)."
+                << std::endl;
+      MPI_Abort(comm, 1);
+    }
+
+
+
     template <int dim>
     void
     run_simulation(ParameterHandler  &prm,
@@ -261,6 +339,7 @@ namespace rupture
   {
     const bool root =
       (dealii::Utilities::MPI::this_mpi_process(communicator) == 0);
+    const FailureChannel failures(communicator);
     try
       {
         std::string              parameter_file;
@@ -527,14 +606,12 @@ namespace rupture
       }
     catch (const std::exception &e)
       {
-        if (root)
-          std::cerr << "\nError: " << e.what() << std::endl;
+        end_unexpected(e.what(), failures);
         return 1;
       }
     catch (...)
       {
-        if (root)
-          std::cerr << "\nError: an unknown exception was raised." << std::endl;
+        end_unexpected("an unknown exception was raised", failures);
         return 1;
       }
     return 0;
