@@ -16,6 +16,8 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
+#include <stdexcept>
 
 namespace rupture
 {
@@ -281,6 +283,21 @@ namespace rupture
       // constants of its key where its constants vary).
       const auto scaled_matrix = [&](const auto                      &cell,
                                      const std::vector<std::int64_t> &key) {
+        // (A release build checks too: an invalid id would read beyond the
+        // materials, as a three-level TPV3 run on two ranks did once.)
+        if (cell->material_id() >= materials.n_materials())
+          {
+            std::ostringstream text;
+            text << "Internal error: the cell at (" << cell->center()
+                 << "), level " << cell->level() << ", has material id "
+                 << static_cast<unsigned int>(cell->material_id()) << ", but "
+                 << materials.n_materials()
+                 << " materials are defined. Please report it with the "
+                    "parameter file.";
+            // Raised on this process only: the run ends by
+            // run_program()'s agreement on such errors (an abort).
+            throw std::logic_error(text.str());
+          }
         const Material::ElasticConstants m =
           materials.reference(cell->material_id(),
                               materials.given_as_functions(

@@ -273,8 +273,8 @@ namespace rupture
 
     /**
      * The end of a run that an exception outside the program's own checks
-     * stopped (the C++ library's, such as std::bad_alloc or a string
-     * too long): raised on every process (an input that fails alike
+     * stopped (the C++ library's, such as std::bad_alloc, and internal
+     * errors): raised on every process (an input that fails alike
      * everywhere), or on one only, whose partners would then wait in their
      * next collective operation for ever. The processes that caught it
      * meet in a barrier of @p channel for up to a minute: if all come, the
@@ -600,6 +600,8 @@ namespace rupture
       }
     catch (const ExceptionBase &e)
       {
+        // (The program's checks are made collective: every process raises
+        // them together.)
         if (root)
           std::cerr << "\nError: " << Utilities::user_message(e) << std::endl;
         return 1;
