@@ -119,6 +119,29 @@ namespace tests
   }
 
   /**
+   * The columns that <Mesh refinement> adds to a statistics file, one
+   * entry per step: the DoFs (column 24, counted from 1) and the energy
+   * the mesh changes have added so far (column 25).
+   */
+  struct AdaptiveColumns
+  {
+    std::vector<double> dofs, remeshing;
+  };
+
+  inline AdaptiveColumns
+  read_adaptive_columns(const std::string &file)
+  {
+    AdaptiveColumns columns;
+    for (const auto &row : read_statistics(file))
+      if (row.size() >= 25)
+        {
+          columns.dofs.push_back(row[23]);
+          columns.remeshing.push_back(row[24]);
+        }
+    return columns;
+  }
+
+  /**
    * The rows of numbers of a CSV file such as events.csv: lines that start
    * with '#' and the line of column names (the first other line) left out.
    */

@@ -88,18 +88,6 @@ namespace rupture
 
 
     template <int dim>
-    bool
-    FaultRefinement<dim>::touches_fault(const CellIterator &cell) const
-    {
-      for (const auto f : cell->face_indices())
-        if (at_fault(cell, f))
-          return true;
-      return false;
-    }
-
-
-
-    template <int dim>
     std::unique_ptr<ProcessZoneCriterion<dim>>
     FaultRefinement<dim>::process_zone_criterion() const
     {
@@ -293,29 +281,32 @@ namespace rupture
             // By the fault's criteria, a cell of the fault is judged at
             // its fault faces, a cell away from it at its centre (only
             // coarsened).
-            bool     at_the_fault = false;
-            Decision decision     = Decision::coarsen;
+            bool     at_the_fault = false, touches_fault = false;
+            Decision decision = Decision::coarsen;
             for (const auto f : cell->face_indices())
-              if (fault_criteria && at_fault(cell, f) &&
-                  !cell->neighbor(f)->has_children())
-                {
-                  at_the_fault              = true;
-                  const unsigned int finest = finest_fault_level(cell, f);
-                  Decision           of     = Decision::keep;
-                  if (parameters.follow_front)
-                    of = front->decide(cell->face(f)->center(),
-                                       cell->face(f)->diameter(),
-                                       level,
-                                       base,
-                                       finest);
-                  else if (level < finest)
-                    of = Decision::refine;
-                  else if (level > finest_fault_level(cell, f, 1.5))
-                    of = Decision::coarsen;
-                  if (of == Decision::refine ||
-                      (of == Decision::keep && decision != Decision::refine))
-                    decision = of;
-                }
+              {
+                if (!at_fault(cell, f))
+                  continue;
+                touches_fault = true;
+                if (!fault_criteria || cell->neighbor(f)->has_children())
+                  continue;
+                at_the_fault              = true;
+                const unsigned int finest = finest_fault_level(cell, f);
+                Decision           of     = Decision::keep;
+                if (parameters.follow_front)
+                  of = front->decide(cell->face(f)->center(),
+                                     cell->face(f)->diameter(),
+                                     level,
+                                     base,
+                                     finest);
+                else if (level < finest)
+                  of = Decision::refine;
+                else if (level > finest_fault_level(cell, f, 1.5))
+                  of = Decision::coarsen;
+                if (of == Decision::refine ||
+                    (of == Decision::keep && decision != Decision::refine))
+                  decision = of;
+              }
             if (!at_the_fault)
               decision = front->decide(
                 cell->center(), cell->diameter(), level, base, base);
@@ -327,7 +318,7 @@ namespace rupture
                 // but leaves coarsening to the fault's criteria.
                 Decision of_wave =
                   wave->decide(cell, base, base + parameters.wavefield_levels);
-                if (of_wave == Decision::coarsen && touches_fault(cell))
+                if (of_wave == Decision::coarsen && touches_fault)
                   of_wave = Decision::keep;
                 decision = combined(decision, of_wave);
               }

@@ -191,6 +191,23 @@ namespace rupture
                       n_nodes);
       for (const auto &cell : mesh.active_cell_iterators())
         materials.check_material_id(cell->material_id());
+      // Children take their parent's material wherever p4est refines a
+      // coarse cell again (cells moved between processes, a loaded
+      // checkpoint): a scene's parent cells carry their children's.
+      for (const auto &cell : mesh.cell_iterators())
+        if (cell->has_children())
+          for (const auto &child : cell->child_iterators())
+            if (child->material_id() != cell->material_id())
+              {
+                std::ostringstream message;
+                message << "Internal error: the scene's cell at ("
+                        << cell->center() << ") on level " << cell->level()
+                        << " has material id " << cell->material_id()
+                        << " and a child with " << child->material_id()
+                        << "; a scene must give its parent cells their "
+                           "children's material.";
+                AssertThrow(false, ExcMessage(message.str()));
+              }
       // A continued run takes the checkpoint's refined mesh (and its
       // partition onto this run's ranks), with the fields attached.
       const bool saved = !saved_mesh.empty();

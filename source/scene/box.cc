@@ -370,9 +370,9 @@ namespace rupture
               return q;
             },
             triangulation);
-          // Colorizing numbers the boundaries, but also sets material ids.
-          for (const auto &cell : triangulation.active_cell_iterators())
-            cell->set_material_id(0);
+          // Colorizing numbers the boundaries, but also sets material ids
+          // by octant.
+          set_materials(triangulation);
           return;
         }
       // Cell sizes per direction. In the vertical direction the layer
@@ -404,13 +404,38 @@ namespace rupture
           steps[dim - 1].push_back((breaks[l] - breaks[l + 1]) /
                                    layer_cells[l]);
 
+      // A coarse cell lies in one layer: each layer's cells (counted from
+      // the bottom) fill whole blocks of 2^levels.
+      const auto aligned = [&](const unsigned int l) {
+        const unsigned int m = 1u << l;
+        unsigned int       n = 0;
+        for (int k = n_layers - 1; k >= 0; --k)
+          {
+            n += layer_cells[k];
+            if (n % m != 0)
+              return false;
+          }
+        return true;
+      };
       unsigned int layered_levels = levels;
-      while (layered_levels > 0 &&
-             steps[dim - 1].size() % (1u << layered_levels) != 0)
+      while (layered_levels > 0 && !aligned(layered_levels))
         --layered_levels;
       build_tensor_mesh(triangulation, steps, layered_levels);
+      set_materials(triangulation);
+    }
 
-      for (const auto &cell : triangulation.active_cell_iterators())
+
+
+    template <int dim>
+    void
+    Box<dim>::set_materials(
+      parallel::distributed::Triangulation<dim> &triangulation) const
+    {
+      // Every cell, not the active ones alone: a process that refines a
+      // coarse cell later (p4est moves cells between processes, a
+      // checkpoint is loaded onto the coarse mesh) gives the children
+      // their parent's material.
+      for (const auto &cell : triangulation.cell_iterators())
         {
           const double       z  = cell->center()[dim - 1];
           types::material_id id = 0;

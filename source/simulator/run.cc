@@ -272,49 +272,74 @@ namespace rupture
 
 
     /**
-     * The end of a run that an exception outside the program's own checks
-     * stopped (the C++ library's, such as std::bad_alloc, and internal
-     * errors): raised on every process (an input that fails alike
-     * everywhere), or on one only, whose partners would then wait in their
-     * next collective operation for ever. The processes that caught it
-     * meet in a barrier of @p channel for up to a minute: if all come, the
-     * first process says what happened and the run ends with an error as
-     * usual; if not, the process says so, naming itself, and aborts the
-     * run (MPI_Abort), so that the job ends instead of hanging.
+     * The end of a run, agreed between the processes on @p channel: each
+     * comes with whether it @p failed (and @p what), or with its @p code.
+     * A failure may be raised on one process only (an exception outside
+     * the program's own collective checks, such as std::bad_alloc, or a
+     * file that one process cannot write), while its partners wait in
+     * their next collective operation for ever. So every process, finished
+     * or failed, meets the others in a barrier of @p channel; a failed one
+     * waits for up to ten seconds. If all come, they agree on what
+     * happened: if all failed, the first process says why and the run ends
+     * with an error as usual; if some failed, each of those says so,
+     * naming itself. If not all come, the failed process says so and
+     * aborts the run (MPI_Abort), so that the job ends instead of hanging.
+     * Returns the exit code: 1 if any process failed.
      */
-    void
-    end_unexpected(const std::string &what, const FailureChannel &channel)
+    int
+    agree_on_end(const FailureChannel &channel,
+                 const bool            failed,
+                 const std::string    &what,
+                 const int             code)
     {
       const MPI_Comm     comm = channel.get();
       const unsigned int n    = dealii::Utilities::MPI::n_mpi_processes(comm);
       const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(comm);
       if (n == 1)
         {
-          std::cerr << "\nError: " << what << std::endl;
-          return;
+          if (failed)
+            std::cerr << "\nError: " << what << std::endl;
+          return failed ? 1 : code;
         }
       MPI_Request request;
       MPI_Ibarrier(comm, &request);
-      int        all   = 0;
+      int all = 0;
+      if (!failed)
+        {
+          MPI_Wait(&request, MPI_STATUS_IGNORE);
+          all = 1;
+        }
       const auto start = std::chrono::steady_clock::now();
       while (!all && std::chrono::steady_clock::now() - start <
-                       std::chrono::seconds(60))
+                       std::chrono::seconds(10))
         {
           MPI_Test(&request, &all, MPI_STATUS_IGNORE);
           if (!all)
             std::this_thread::sleep_for(std::chrono::milliseconds(10));
         }
-      if (all)
+      const char *stop =
+        (!what.empty() &&
+         std::string(".?!").find(what.back()) != std::string::npos) ?
+          " " :
+          ". ";
+      if (!all)
         {
-          if (rank == 0)
-            std::cerr << "\nError: " << what << std::endl;
-          return;
+          std::cerr << "\nError on process " << rank << " of " << n << ": "
+                    << what << stop
+                    << "The other processes did not fail with it and "
+                       "cannot go on: the run is aborted (MPI_Abort)."
+                    << std::endl;
+          MPI_Abort(comm, 1);
         }
-      std::cerr << "\nError on process " << rank << " of " << n << ": " << what
-                << ". The other processes did not fail with it and cannot "
-                   "go on: the run is aborted (MPI_Abort)."
-                << std::endl;
-      MPI_Abort(comm, 1);
+      const unsigned int n_failed =
+        dealii::Utilities::MPI::sum(failed ? 1u : 0u, comm);
+      if (n_failed == n && rank == 0)
+        std::cerr << "\nError: " << what << std::endl;
+      else if (n_failed < n && failed)
+        std::cerr << "\nError on process " << rank << " of " << n << ": "
+                  << what << stop << "(The other processes finished.)"
+                  << std::endl;
+      return n_failed > 0 ? 1 : code;
     }
 
 
@@ -340,6 +365,9 @@ namespace rupture
     const bool root =
       (dealii::Utilities::MPI::this_mpi_process(communicator) == 0);
     const FailureChannel failures(communicator);
+    bool                 failed = false;
+    std::string          what;
+    int                  code = 0;
     try
       {
         std::string              parameter_file;
@@ -596,26 +624,23 @@ namespace rupture
       {
         if (root)
           std::cerr << "\n" << stopped.what() << std::endl;
-        return 128 + stopped.signal;
+        code = 128 + stopped.signal;
       }
     catch (const ExceptionBase &e)
       {
-        // (The program's checks are made collective: every process raises
-        // them together.)
-        if (root)
-          std::cerr << "\nError: " << Utilities::user_message(e) << std::endl;
-        return 1;
+        failed = true;
+        what   = Utilities::user_message(e);
       }
     catch (const std::exception &e)
       {
-        end_unexpected(e.what(), failures);
-        return 1;
+        failed = true;
+        what   = e.what();
       }
     catch (...)
       {
-        end_unexpected("an unknown exception was raised", failures);
-        return 1;
+        failed = true;
+        what   = "An unknown exception was raised.";
       }
-    return 0;
+    return agree_on_end(failures, failed, what, code);
   }
 } // namespace rupture

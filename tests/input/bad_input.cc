@@ -37,6 +37,22 @@ end
     std::ofstream(file) << text;
   }
 
+  /// valid.prm with @p entries set (each "Entry=value") and a penalty
+  /// contact fault on the plane y = @p y.
+  std::vector<std::string>
+  with_fault(const std::string &y, const std::vector<std::string> &entries)
+  {
+    std::vector<std::string> args = {"valid.prm"};
+    for (const std::string &entry :
+         std::vector<std::string>{"Fault/Model=penalty contact",
+                                  "Fault/Plane point=0, " + y,
+                                  "Fault/Plane normal=0, 1"})
+      args.insert(args.end(), {"--set", entry});
+    for (const std::string &entry : entries)
+      args.insert(args.end(), {"--set", entry});
+    return args;
+  }
+
   void
   check(const std::string &title, const std::vector<std::string> &args)
   {
@@ -299,17 +315,9 @@ main(int argc, char **argv)
          "--set",
          "Discretization/Refinement region levels=1"});
   check("multigrid with a fault that is not on faces of the coarse mesh",
-        {"valid.prm",
-         "--set",
-         "Solver/Preconditioner=multigrid",
-         "--set",
-         "Discretization/Initial global refinement=1",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 250",
-         "--set",
-         "Fault/Plane normal=0, 1"});
+        with_fault("250",
+                   {"Solver/Preconditioner=multigrid",
+                    "Discretization/Initial global refinement=1"}));
   check("mesh refinement with multigrid",
         {"valid.prm",
          "--set",
@@ -325,53 +333,21 @@ main(int argc, char **argv)
   check("mesh refinement without a fault",
         {"valid.prm", "--set", "Mesh refinement/Criteria=rupture front"});
   check("mesh refinement to the process zone of a law without one",
-        {"valid.prm",
-         "--set",
-         "Mesh refinement/Criteria=process zone",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 250",
-         "--set",
-         "Fault/Plane normal=0, 1",
-         "--set",
-         "Fault/Friction law=cochard madariaga"});
+        with_fault("250",
+                   {"Mesh refinement/Criteria=process zone",
+                    "Fault/Friction law=cochard madariaga"}));
   check("the wavefield criterion in a quasi-static run",
-        {"valid.prm",
-         "--set",
-         "Mesh refinement/Criteria=wavefield",
-         "--set",
-         "Time integration/Scheme=quasi-static",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 500",
-         "--set",
-         "Fault/Plane normal=0, 1"});
+        with_fault("500",
+                   {"Mesh refinement/Criteria=wavefield",
+                    "Time integration/Scheme=quasi-static"}));
   check("a wavefield threshold of 0",
-        {"valid.prm",
-         "--set",
-         "Mesh refinement/Criteria=wavefield",
-         "--set",
-         "Mesh refinement/Wavefield threshold=0",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 500",
-         "--set",
-         "Fault/Plane normal=0, 1"});
+        with_fault("500",
+                   {"Mesh refinement/Criteria=wavefield",
+                    "Mesh refinement/Wavefield threshold=0"}));
   check("a DoF budget below the base mesh",
-        {"valid.prm",
-         "--set",
-         "Mesh refinement/Criteria=rupture front",
-         "--set",
-         "Mesh refinement/Maximum degrees of freedom=10",
-         "--set",
-         "Fault/Model=penalty contact",
-         "--set",
-         "Fault/Plane point=0, 500",
-         "--set",
-         "Fault/Plane normal=0, 1"});
+        with_fault("500",
+                   {"Mesh refinement/Criteria=rupture front",
+                    "Mesh refinement/Maximum degrees of freedom=10"}));
   check("an adaptive step controller with a dynamic scheme",
         {"valid.prm",
          "--set",

@@ -87,6 +87,29 @@ namespace
       }
     return diff / std::max(largest, 1e-300);
   }
+
+  /// Runs @p prm with @p settings in <name>-numbers, and with @p functions
+  /// added in <name>-functions, and says whether the two statistics files
+  /// agree to @p tolerance.
+  void
+  compare_with_functions(const std::string              &title,
+                         const std::string              &name,
+                         const std::string              &prm,
+                         std::vector<std::string>        settings,
+                         const std::vector<std::string> &functions,
+                         const double                    tolerance)
+  {
+    tests::run_in(name + "-numbers", {prm}, settings);
+    settings.insert(settings.end(), functions.begin(), functions.end());
+    tests::run_in(name + "-functions", {prm}, settings);
+    const auto a = tests::read_statistics(name + "-numbers/statistics");
+    const auto b = tests::read_statistics(name + "-functions/statistics");
+    std::printf("%s: %zu rows, statistics %s to %g\n",
+                title.c_str(),
+                a.size(),
+                difference(a, b) < tolerance ? "the same" : "differ",
+                tolerance);
+  }
 } // namespace
 
 int
@@ -96,42 +119,29 @@ main(int argc, char **argv)
   const std::string source = std::string(SOURCE_DIR) + "/../";
 
   // 1. Constant functions = numbers.
-  {
-    const std::string prm = source + "fault/split_node_3d.prm";
-    tests::run_in("numbers-3d", {prm}, {"Time integration/End time=0.6"});
-    tests::run_in("functions-3d",
-                  {prm},
-                  {"Time integration/End time=0.6",
-                   "Material/Density=2670 + 0*x",
-                   "Material/P-wave speed=6000 + 0*y",
-                   "Material/S-wave speed=3464 + 0*z"});
-    const auto a = tests::read_statistics("numbers-3d/statistics");
-    const auto b = tests::read_statistics("functions-3d/statistics");
-    std::printf("3-D split nodes: %zu rows, statistics %s to 1e-10\n",
-                a.size(),
-                difference(a, b) < 1e-10 ? "the same" : "differ");
-    std::printf("3-D split nodes: centre station %s to 1e-10\n",
-                difference(tests::read_statistics("numbers-3d/center.dat"),
-                           tests::read_statistics("functions-3d/center.dat")) <
-                    1e-10 ?
-                  "the same" :
-                  "differs");
-  }
-  {
-    const std::string prm = source + "scene/northeast_japan_fault_2d.prm";
-    tests::run_in("numbers-2d", {prm}, {});
-    tests::run_in("functions-2d",
-                  {prm},
-                  {"Material/Young's modulus=2.69e10 + 0*x; 3.82e10 + 0*y; "
-                   "12.07e10 + 0*x",
-                   "Material/Poisson's ratio=0.226 + 0*x; 0.273; 0.258 + 0*y",
-                   "Material/Density=2700; 3300 + 0*y; 3000"});
-    const auto a = tests::read_statistics("numbers-2d/statistics");
-    const auto b = tests::read_statistics("functions-2d/statistics");
-    std::printf("2-D Northeast Japan: %zu rows, statistics %s to 1e-9\n",
-                a.size(),
-                difference(a, b) < 1e-9 ? "the same" : "differ");
-  }
+  compare_with_functions("3-D split nodes",
+                         "split-3d",
+                         source + "fault/split_node_3d.prm",
+                         {"Time integration/End time=0.6"},
+                         {"Material/Density=2670 + 0*x",
+                          "Material/P-wave speed=6000 + 0*y",
+                          "Material/S-wave speed=3464 + 0*z"},
+                         1e-10);
+  std::printf("3-D split nodes: centre station %s to 1e-10\n",
+              difference(tests::read_statistics("split-3d-numbers/center.dat"),
+                         tests::read_statistics(
+                           "split-3d-functions/center.dat")) < 1e-10 ?
+                "the same" :
+                "differs");
+  compare_with_functions(
+    "2-D Northeast Japan",
+    "japan-2d",
+    source + "scene/northeast_japan_fault_2d.prm",
+    {},
+    {"Material/Young's modulus=2.69e10 + 0*x; 3.82e10 + 0*y; 12.07e10 + 0*x",
+     "Material/Poisson's ratio=0.226 + 0*x; 0.273; 0.258 + 0*y",
+     "Material/Density=2700; 3300 + 0*y; 3000"},
+    1e-9);
 
   // 2. The stable step in a box whose P-wave speed grows along x.
   const std::string box = R"(set Dimension = 2
@@ -278,23 +288,18 @@ end
 )";
   }
   for (const std::string scheme : {"quasi-static", "explicit"})
-    {
-      std::vector<std::string> settings;
-      if (scheme == "explicit")
-        settings = {"Time integration/Scheme=explicit central difference",
-                    "Time integration/Time step=0",
-                    "Time integration/End time=0.05"};
-      tests::run_in("layers-numbers", {"layers.prm"}, settings);
-      settings.push_back("Material/Density=2500; 3000 + 0*x");
-      settings.push_back("Material/P-wave speed=5000; 6000 + 0*y");
-      settings.push_back("Material/S-wave speed=2887; 3464 + 0*x*y");
-      tests::run_in("layers-functions", {"layers.prm"}, settings);
-      const auto a = tests::read_statistics("layers-numbers/statistics");
-      const auto b = tests::read_statistics("layers-functions/statistics");
-      std::printf("anisotropic layer over a function layer, %s: %zu rows, "
-                  "statistics %s to 1e-10\n",
-                  scheme.c_str(),
-                  a.size(),
-                  difference(a, b) < 1e-10 ? "the same" : "differ");
-    }
+    compare_with_functions(
+      "anisotropic layer over a function layer, " + scheme,
+      "layers",
+      "layers.prm",
+      scheme == "explicit" ?
+        std::vector<std::string>{"Time integration/Scheme=explicit central "
+                                 "difference",
+                                 "Time integration/Time step=0",
+                                 "Time integration/End time=0.05"} :
+        std::vector<std::string>{},
+      {"Material/Density=2500; 3000 + 0*x",
+       "Material/P-wave speed=5000; 6000 + 0*y",
+       "Material/S-wave speed=2887; 3464 + 0*x*y"},
+      1e-10);
 }

@@ -65,16 +65,14 @@ namespace
                     steps.push_back(std::stol(log.substr(at + key.size())));
       }
     r.held = log.find("The mesh stays below") != std::string::npos;
-    // Column 1 the step, 2 the time; 24 (from 1) the DoFs, with <Mesh
-    // refinement>.
+    for (const double n :
+         tests::read_adaptive_columns(directory + "/statistics").dofs)
+      r.peak_dofs = std::max(r.peak_dofs, n);
+    // Column 1 the step, 2 the time.
     for (const auto &row : tests::read_statistics(directory + "/statistics"))
-      {
-        if (row.size() >= 25)
-          r.peak_dofs = std::max(r.peak_dofs, row[23]);
-        for (const long step : steps)
-          if (step > 1 && std::lround(row[0]) == step)
-            r.adapted_at.push_back(row[1]);
-      }
+      for (const long step : steps)
+        if (step > 1 && std::lround(row[0]) == step)
+          r.adapted_at.push_back(row[1]);
     return r;
   }
 

@@ -79,12 +79,12 @@ namespace
   dof_steps(const std::string &directory)
   {
     double sum = 0, peak = 0;
-    for (const auto &row : tests::read_statistics(directory + "/statistics"))
-      if (row.size() >= 24)
-        {
-          sum += row[23];
-          peak = std::max(peak, row[23]);
-        }
+    for (const double n :
+         tests::read_adaptive_columns(directory + "/statistics").dofs)
+      {
+        sum += n;
+        peak = std::max(peak, n);
+      }
     return {sum, peak};
   }
 

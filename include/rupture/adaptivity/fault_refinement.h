@@ -175,10 +175,6 @@ namespace rupture
       bool
       at_fault(const CellIterator &cell, const unsigned int f) const;
 
-      /// Whether a face of @p cell lies on the fault.
-      bool
-      touches_fault(const CellIterator &cell) const;
-
       /// The DoFs the mesh would have after the flags set now: @p n_dofs
       /// times the ratio of the cell counts. Collective.
       double

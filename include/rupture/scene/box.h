@@ -76,6 +76,11 @@ namespace rupture
         parallel::distributed::Triangulation<dim> &triangulation,
         const std::vector<std::vector<double>>    &steps,
         const unsigned int                         levels) const;
+
+      /// The material id of every cell, active or not: its layer.
+      void
+      set_materials(
+        parallel::distributed::Triangulation<dim> &triangulation) const;
     };
   } // namespace Scene
 } // namespace rupture
