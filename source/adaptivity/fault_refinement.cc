@@ -241,15 +241,20 @@ namespace rupture
                   }
           reach = dealii::Utilities::MPI::max(reach, communicator);
         }
-      // With the wavefield criterion the step follows cells anywhere: its
-      // coarsening (one level per adaptation) may double the step, so the
-      // band is that of twice the present step.
-      front = std::make_unique<FrontCriterion<dim>>(
-        active,
-        parameters.wavefield ?
-          band_for(2 * time_step) :
-          band_for(std::ldexp(
-            time_step, -static_cast<int>(reach - fault_levels().first))));
+      // With the wavefield criterion the step follows the finest cells
+      // anywhere: where the front refines beyond them, the steps to come
+      // are shorter by as many halvings; else the wavefield's coarsening
+      // (one level per adaptation) may double the step.
+      double step =
+        std::ldexp(time_step, -static_cast<int>(reach - fault_levels().first));
+      if (parameters.wavefield)
+        {
+          const int finest = triangulation.n_global_levels() - 1;
+          step             = static_cast<int>(reach) > finest ?
+                               std::ldexp(time_step, finest - int(reach)) :
+                               2 * time_step;
+        }
+      front = std::make_unique<FrontCriterion<dim>>(active, band_for(step));
     }
 
 
