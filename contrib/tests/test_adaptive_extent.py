@@ -1,0 +1,31 @@
+"""Tests of contrib/adaptive-extent: its runs and its table."""
+
+
+def test_runs_share_the_box_and_the_reference_comes_first(script):
+    study = script("adaptive-extent")
+    cases = study.cases()
+    names = [name for name, _, _ in cases]
+    assert names[0] == "fixed-300"
+    assert len(set(names)) == len(names)
+    runs = {name: sets for name, _, sets in cases}
+    assert "Scene/Box/Number of cells=200, 112" in runs["fixed-300"]
+    assert "Scene/Box/Number of cells=25, 14" in runs["front-3-extra-8000"]
+    assert "Mesh refinement/Extra band=8000" in runs["front-3-extra-8000"]
+    assert "Mesh refinement/Levels=3" in runs["front-3-extra-0"]
+    assert "Mesh refinement/Criteria=process zone" in runs["fault-3"]
+    assert "Discretization/Refinement region levels=3" in runs["band-3"]
+    assert "Scene/Box/Number of cells=50, 28" in runs["front-2-extra-5000"]
+
+
+def test_table_gives_errors_against_the_first_run(script):
+    study = script("adaptive-extent")
+    results = [
+        ("ref", "reference", {"peak dofs": 100, "dof-steps": 1e4,
+                              "slip": {"faultst075": 4.0,
+                                       "faultst120": 2.0}}),
+        ("a", "a |y| band", {"peak dofs": 10, "dof-steps": 5e3,
+                             "slip": {"faultst075": 4.2,
+                                      "faultst120": 1.9}})]
+    lines = study.table(results).splitlines()
+    assert lines[2] == "| reference | 100 | 1e+04 | +0.0 % | +0.0 % |"
+    assert lines[3] == "| a \\|y\\| band | 10 | 5e+03 | +5.0 % | -5.0 % |"
