@@ -21,29 +21,11 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  const std::string input = R"(set Dimension = 2
-set Test mode = true
-set Output directory = results
-subsection Scene
-  subsection Box
-    set Number of cells = 8
-  end
-end
-subsection Boundary conditions
-  set Fixed = bottom
-end
-subsection Loads
-  set Gravity = 9.81
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 100000
-end
-subsection Output
-  set Output interval = 0.01
-  set Receivers = top: 500, 1000
-end
-)";
+  // The shared small box, run for a long time, with receivers.
+  const std::string input =
+    tests::read_file(std::string(SOURCE_DIR) + "/inputs/gravity_box.prm") +
+    "subsection Time integration\n  set End time = 100000\nend\n"
+    "subsection Output\n  set Receivers = top: 500, 1000\nend\n";
 
   // Whether every row of a table has as many numbers as the first.
   bool

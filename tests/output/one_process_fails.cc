@@ -21,35 +21,14 @@ namespace fs = std::filesystem;
 int
 main()
 {
-  std::ofstream("run.prm") << R"(set Dimension = 2
-set Test mode = true
-set Output directory = results
-subsection Scene
-  subsection Box
-    set Number of cells = 8
-  end
-end
-subsection Boundary conditions
-  set Fixed = bottom
-end
-subsection Loads
-  set Gravity = 9.81
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 0.05
-end
-subsection Output
-  set Output interval = 0.01
-end
-)";
   fs::remove_all("results");
   fs::create_directories("results/solution/solution_00001.1.vtu");
   std::ofstream("results/solution/solution_00001.1.vtu/keep") << "a user's\n";
 
-  const int status =
-    std::system("timeout 300 mpirun -np 2 --oversubscribe ../../../rupture "
-                "run.prm > run.log 2>&1");
+  const int status = std::system(
+    ("timeout 300 mpirun -np 2 --oversubscribe ../../../rupture " +
+     std::string(SOURCE_DIR) + "/inputs/gravity_box.prm > run.log 2>&1")
+      .c_str());
   const bool        timed_out = WIFEXITED(status) && WEXITSTATUS(status) == 124;
   const std::string log       = tests::read_file("run.log");
   const auto        has       = [&](const std::string &text) {
