@@ -194,20 +194,30 @@ namespace rupture
       // Children take their parent's material wherever p4est refines a
       // coarse cell again (cells moved between processes, a loaded
       // checkpoint): a scene's parent cells carry their children's.
+      // (Each process holds only the refinement near its own cells: the
+      // verdict is taken together.)
+      std::string mixed;
       for (const auto &cell : mesh.cell_iterators())
-        if (cell->has_children())
+        if (mixed.empty() && cell->has_children())
           for (const auto &child : cell->child_iterators())
-            if (child->material_id() != cell->material_id())
+            if (child->material_id() != cell->material_id() && mixed.empty())
               {
-                std::ostringstream message;
-                message << "Internal error: the scene's cell at ("
-                        << cell->center() << ") on level " << cell->level()
-                        << " has material id " << cell->material_id()
-                        << " and a child with " << child->material_id()
-                        << "; a scene must give its parent cells their "
-                           "children's material.";
-                AssertThrow(false, ExcMessage(message.str()));
+                std::ostringstream where;
+                where << "the scene's cell at (" << cell->center()
+                      << ") on level " << cell->level() << " has material id "
+                      << cell->material_id() << " and a child with "
+                      << child->material_id();
+                mixed = where.str();
               }
+      if (dealii::Utilities::MPI::max(mixed.empty() ? 0 : 1,
+                                      mpi_communicator) != 0)
+        AssertThrow(false,
+                    ExcMessage("Internal error: " +
+                               (mixed.empty() ? std::string("on another "
+                                                            "process, ") :
+                                                mixed + "; ") +
+                               "a scene must give its parent cells their "
+                               "children's material."));
       // A continued run takes the checkpoint's refined mesh (and its
       // partition onto this run's ranks), with the fields attached.
       const bool saved = !saved_mesh.empty();

@@ -282,9 +282,10 @@ namespace rupture
      * waits for up to ten seconds. If all come, they agree on what
      * happened: if all failed, the first process says why and the run ends
      * with an error as usual; if some failed, each of those says so,
-     * naming itself. If not all come, the failed process says so and
-     * aborts the run (MPI_Abort), so that the job ends instead of hanging.
-     * Returns the exit code: 1 if any process failed.
+     * naming itself. (Early ends, such as --help, come here too, so that
+     * a failure while process 0 prints meets the others.) If not all come, the
+     * failed process says so and aborts the run (MPI_Abort), so that the job
+     * ends instead of hanging. Returns the exit code: 1 if any process failed.
      */
     int
     agree_on_end(const FailureChannel &channel,
@@ -326,8 +327,9 @@ namespace rupture
         {
           std::cerr << "\nError on process " << rank << " of " << n << ": "
                     << what << stop
-                    << "The other processes did not fail with it and "
-                       "cannot go on: the run is aborted (MPI_Abort)."
+                    << "The other processes did not come to the end "
+                       "within ten seconds (they may wait for this one): "
+                       "the run is aborted (MPI_Abort)."
                     << std::endl;
           MPI_Abort(comm, 1);
         }
@@ -337,7 +339,7 @@ namespace rupture
         std::cerr << "\nError: " << what << std::endl;
       else if (n_failed < n && failed)
         std::cerr << "\nError on process " << rank << " of " << n << ": "
-                  << what << stop << "(The other processes finished.)"
+                  << what << stop << "(The other processes did not fail.)"
                   << std::endl;
       return n_failed > 0 ? 1 : code;
     }
@@ -382,7 +384,7 @@ namespace rupture
               {
                 if (root)
                   std::cout << usage;
-                return 0;
+                return agree_on_end(failures, false, "", 0);
               }
             else if (arg == "--print-parameters")
               {
@@ -481,7 +483,7 @@ namespace rupture
                     print_markdown(tree, "", std::cout);
                   }
               }
-            return 0;
+            return agree_on_end(failures, false, "", 0);
           }
 
         AssertThrow(!parameter_file.empty(),
