@@ -3,6 +3,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold.h>
 
 #include <algorithm>
 #include <cmath>
@@ -284,6 +285,113 @@ namespace rupture
 
 
 
+    namespace
+    {
+      /**
+       * Where the cells of a box built as refined blocks lie: per
+       * direction, the chart is the coordinate in which each block is cut
+       * into equal parts (as refinement cuts it), and the map takes it to
+       * the vertex coordinates @p x asked for (piecewise linear in the
+       * index of the vertex). Refinement then puts new vertices where the
+       * box put them, also when p4est refines a coarse cell again after
+       * moving cells between processes or loading a checkpoint.
+       */
+      template <int dim>
+      class BlockManifold : public ChartManifold<dim, dim, dim>
+      {
+      public:
+        BlockManifold(const std::vector<std::vector<double>> &x,
+                      const std::vector<std::vector<double>> &coarse_x,
+                      const unsigned int                      m)
+          : x(x)
+          , coarse_x(coarse_x)
+          , m(m)
+        {}
+
+        std::unique_ptr<Manifold<dim, dim>>
+        clone() const override
+        {
+          return std::make_unique<BlockManifold<dim>>(*this);
+        }
+
+        Point<dim>
+        pull_back(const Point<dim> &q) const override
+        {
+          Point<dim> c;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double index = position(x[d], q[d]);
+              const auto   n     = coarse_x[d].size() - 1;
+              const auto   k     = std::min<std::size_t>(
+                static_cast<std::size_t>(std::max(index, 0.) / m), n - 1);
+              c[d] = coarse_x[d][k] + (index - double(k * m)) / m *
+                                        (coarse_x[d][k + 1] - coarse_x[d][k]);
+            }
+          return c;
+        }
+
+        Point<dim>
+        push_forward(const Point<dim> &c) const override
+        {
+          Point<dim> q;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double block = position(coarse_x[d], c[d]);
+              q[d]               = value(x[d], block * m);
+            }
+          return q;
+        }
+
+      private:
+        /// The (fractional) index at which the increasing @p v takes @p y.
+        static double
+        position(const std::vector<double> &v, const double y)
+        {
+          const std::size_t i = std::min<std::size_t>(
+            std::max<std::ptrdiff_t>(std::upper_bound(v.begin(), v.end(), y) -
+                                       v.begin() - 1,
+                                     0),
+            v.size() - 2);
+          return i + (y - v[i]) / (v[i + 1] - v[i]);
+        }
+
+        /// @p v at the fractional index @p index (exactly v[i] near i).
+        static double
+        value(const std::vector<double> &v, const double index)
+        {
+          const double nearest = std::round(index);
+          if (std::abs(index - nearest) < 1e-9 && nearest >= 0 &&
+              nearest <= v.size() - 1)
+            return v[static_cast<std::size_t>(nearest)];
+          const std::size_t i =
+            std::min<std::size_t>(static_cast<std::size_t>(std::max(index, 0.)),
+                                  v.size() - 2);
+          return v[i] + (index - i) * (v[i + 1] - v[i]);
+        }
+
+        std::vector<std::vector<double>> x, coarse_x;
+        unsigned int                     m;
+      };
+    } // namespace
+
+
+
+    template <int dim>
+    double
+    Box<dim>::on_core_grid(const unsigned int d, const double v) const
+    {
+      if (!(growth_factor > 1))
+        return v;
+      const double h = (core_upper[d] - core_lower[d]) / n_cells[d];
+      const double i = std::round((v - core_lower[d]) / h);
+      if (i >= 0 && i <= n_cells[d] &&
+          std::abs(v - (core_lower[d] + i * h)) <= 1e-6 * h)
+        return (i == n_cells[d]) ? core_upper[d] : core_lower[d] + i * h;
+      return v;
+    }
+
+
+
     template <int dim>
     void
     Box<dim>::build_tensor_mesh(
@@ -309,26 +417,33 @@ namespace rupture
               coarse_x[d].push_back(x[d][k * m]);
             }
           coarse_x[d].push_back(upper_corner[d]);
+          // The refined vertices go exactly onto a graded core's grid.
+          for (double &v : x[d])
+            v = on_core_grid(d, v);
         }
       GridGenerator::subdivided_hyper_rectangle(
         triangulation, coarse, lower_corner, upper_corner, true);
       if (levels == 0)
         return;
+      const types::manifold_id blocks = 1;
+      triangulation.set_all_manifold_ids(blocks);
+      triangulation.set_manifold(blocks, BlockManifold<dim>(x, coarse_x, m));
       triangulation.refine_global(levels);
+      // The manifold put the refined vertices on the coordinates asked for;
+      // the coarse cells' vertices (sums of the blocks' sizes) go there
+      // too, to the nearest one.
       GridTools::transform(
         [&](const Point<dim> &p) {
           Point<dim> q;
           for (unsigned int d = 0; d < dim; ++d)
             {
-              const std::vector<double> &c        = coarse_x[d];
-              const unsigned int         n_coarse = c.size() - 1;
-              unsigned int               k =
-                std::upper_bound(c.begin(), c.end(), p[d]) - c.begin();
-              k              = std::min(std::max(k, 1u), n_coarse) - 1;
-              const double f = (p[d] - c[k]) / (c[k + 1] - c[k]);
-              const long   j = std::lround(f * m);
-              q[d]           = x[d][std::min<long>(std::max<long>(k * m + j, 0),
-                                         x[d].size() - 1)];
+              const auto above =
+                std::lower_bound(x[d].begin(), x[d].end(), p[d]);
+              const auto below = (above == x[d].begin()) ? above : above - 1;
+              q[d]             = (above == x[d].end() ||
+                      std::abs(*below - p[d]) <= std::abs(*above - p[d])) ?
+                                   *below :
+                                   *above;
             }
           return q;
         },
@@ -357,16 +472,9 @@ namespace rupture
           // edge nodes at 250 m before).
           GridTools::transform(
             [this](const Point<dim> &p) {
-              Point<dim> q = p;
+              Point<dim> q;
               for (unsigned int d = 0; d < dim; ++d)
-                {
-                  const double h = (core_upper[d] - core_lower[d]) / n_cells[d];
-                  const double i = std::round((p[d] - core_lower[d]) / h);
-                  if (i >= 0 && i <= n_cells[d] &&
-                      std::abs(p[d] - (core_lower[d] + i * h)) <= 1e-6 * h)
-                    q[d] =
-                      (i == n_cells[d]) ? core_upper[d] : core_lower[d] + i * h;
-                }
+                q[d] = on_core_grid(d, p[d]);
               return q;
             },
             triangulation);

@@ -77,6 +77,11 @@ namespace rupture
         const std::vector<std::vector<double>>    &steps,
         const unsigned int                         levels) const;
 
+      /// @p v on direction @p d's grid of the graded box's core, if it
+      /// lies within round-off of it (else @p v).
+      double
+      on_core_grid(const unsigned int d, const double v) const;
+
       /// The material id of every cell, active or not: its layer.
       void
       set_materials(
