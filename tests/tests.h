@@ -7,6 +7,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -120,8 +121,9 @@ namespace tests
 
   /**
    * The columns that <Mesh refinement> adds to a statistics file, one
-   * entry per step: the DoFs (column 24, counted from 1) and the energy
-   * the mesh changes have added so far (column 25).
+   * entry per step: the DoFs and the energy the mesh changes have added so
+   * far, found by their names in the file's header ("# N: name"), since
+   * their place depends on the run (a fault, absorbing boundaries).
    */
   struct AdaptiveColumns
   {
@@ -131,12 +133,32 @@ namespace tests
   inline AdaptiveColumns
   read_adaptive_columns(const std::string &file)
   {
+    // The header's column numbers (from 1) of the two names.
+    unsigned int  dofs = 0, remeshing = 0;
+    std::ifstream in(file);
+    std::string   line;
+    while (std::getline(in, line) && !line.empty() && line[0] == '#')
+      {
+        std::istringstream s(line.substr(1));
+        unsigned int       n = 0;
+        char               colon;
+        std::string        name;
+        if (s >> n >> colon && std::getline(s >> std::ws, name))
+          {
+            if (name == "Degrees of freedom")
+              dofs = n;
+            else if (name.rfind("Energy added by mesh changes", 0) == 0)
+              remeshing = n;
+          }
+      }
     AdaptiveColumns columns;
+    if (dofs == 0 || remeshing == 0)
+      return columns;
     for (const auto &row : read_statistics(file))
-      if (row.size() >= 25)
+      if (row.size() >= std::max(dofs, remeshing))
         {
-          columns.dofs.push_back(row[23]);
-          columns.remeshing.push_back(row[24]);
+          columns.dofs.push_back(row[dofs - 1]);
+          columns.remeshing.push_back(row[remeshing - 1]);
         }
     return columns;
   }

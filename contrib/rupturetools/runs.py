@@ -60,6 +60,18 @@ def wall_time(directory):
     return s.get("wall time") if s else None
 
 
+def mpi_prefix(ranks):
+    """The command that starts @p ranks MPI processes (none for one)."""
+    return ["mpirun", "--oversubscribe", "-np", str(ranks)] if ranks > 1 else []
+
+
+def mpi_env():
+    """The environment for mpirun: Open MPI refuses to run as root unless
+    told (containers and CI machines run as root)."""
+    return dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
+                OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+
+
 def run(rupture, prm, directory, sets, ranks=1):
     """Run rupture on @p prm with the --set entries @p sets into
     @p directory (made absolute); returns (exit code, seconds). The screen
@@ -70,10 +82,8 @@ def run(rupture, prm, directory, sets, ranks=1):
     for s in list(sets) + ["Output directory=" + directory,
                            "Test mode=false"]:
         command += ["--set", s]
-    if ranks > 1:
-        command = ["mpirun", "--oversubscribe", "-np", str(ranks)] + command
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = mpi_prefix(ranks) + command
+    env = mpi_env()
     start = time.time()
     with open(directory + ".run.txt", "w") as out:
         code = subprocess.call(command, stdout=out, stderr=subprocess.STDOUT,

@@ -10,6 +10,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
+from . import runs
 from .sweep_files import (TOP, SweepError, case_name, case_prm, format_value, read_json,
                           shown, write_atomically)
 
@@ -86,11 +87,8 @@ def run_case(out, index, rupture):
             os.path.isfile(os.path.join(checkpoints, c, "state"))
             for c in os.listdir(checkpoints) if c.startswith("step-")):
         command.append("--resume")
-    if record["ranks"] > 1:
-        command = ["mpirun", "--oversubscribe", "-np",
-                   str(record["ranks"])] + command
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1",
-               OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    command = runs.mpi_prefix(record["ranks"]) + command
+    env = runs.mpi_env()
     start = time.time()
     with open(os.path.join(d, "run.txt"), "w") as log:
         log.write("$ " + " ".join(shlex.quote(c) for c in command) + "\n")

@@ -58,7 +58,7 @@ namespace rupture
     FaultRefinement<dim>::FaultRefinement(
       const Parameters                                  &parameters,
       dealii::parallel::distributed::Triangulation<dim> &triangulation,
-      const Fault::Fault<dim>                           &fault,
+      const Fault::Fault<dim>                           *fault,
       std::function<unsigned int(const CellIterator &)>  base_level,
       const unsigned int                                 degree)
       : parameters(parameters)
@@ -81,8 +81,8 @@ namespace rupture
     FaultRefinement<dim>::at_fault(const CellIterator &cell,
                                    const unsigned int  f) const
     {
-      return !cell->at_boundary(f) &&
-             fault.side(cell->neighbor(f)) != fault.side(cell);
+      return fault && !cell->at_boundary(f) &&
+             fault->side(cell->neighbor(f)) != fault->side(cell);
     }
 
 
@@ -108,7 +108,7 @@ namespace rupture
                   ancestor_on(CellIterator(cell), base_level(cell))->face(f),
                   dim));
       edge = dealii::Utilities::MPI::min(edge, communicator);
-      const ProcessZoneCriterion<dim> mine(fault.process_zone_widths(),
+      const ProcessZoneCriterion<dim> mine(fault->process_zone_widths(),
                                            edge,
                                            parameters.nodes_per_zone,
                                            degree);
@@ -152,7 +152,7 @@ namespace rupture
         return *levels_now;
       unsigned int finest = 0, refined = 0;
       for (const auto &cell : triangulation.active_cell_iterators())
-        if (cell->is_locally_owned() && fault.side(cell) == 0)
+        if (cell->is_locally_owned() && fault && fault->side(cell) == 0)
           for (const auto f : cell->face_indices())
             if (at_fault(cell, f))
               {
@@ -177,10 +177,10 @@ namespace rupture
       if (!parameters.follow_front || budget_reported || fault_levels().second)
         return false;
       const bool active = !fault
-                             .active_locations(parameters.slip_rate_threshold,
-                                               phase_time,
-                                               parameters.coarsening_delay,
-                                               false)
+                             ->active_locations(parameters.slip_rate_threshold,
+                                                phase_time,
+                                                parameters.coarsening_delay,
+                                                false)
                              .empty();
       return dealii::Utilities::MPI::max(active ? 1 : 0, communicator) == 1;
     }
@@ -202,10 +202,10 @@ namespace rupture
       // their base level.)
       const std::vector<dealii::Point<dim>> active =
         parameters.follow_front ?
-          all_gather(fault.active_locations(parameters.slip_rate_threshold,
-                                            phase_time,
-                                            parameters.coarsening_delay,
-                                            before_first_step),
+          all_gather(fault->active_locations(parameters.slip_rate_threshold,
+                                             phase_time,
+                                             parameters.coarsening_delay,
+                                             before_first_step),
                      communicator) :
           std::vector<dealii::Point<dim>>();
       any_active = !active.empty();
@@ -225,7 +225,7 @@ namespace rupture
         {
           const FrontCriterion<dim> wide(active, band_for(time_step));
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() && fault.side(cell) == 0)
+            if (cell->is_locally_owned() && fault && fault->side(cell) == 0)
               for (const auto f : cell->face_indices())
                 if (at_fault(cell, f))
                   {

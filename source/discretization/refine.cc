@@ -20,6 +20,7 @@ namespace rupture
     void
     Discretization<dim>::refine(std::vector<VectorType>     &fields,
                                 const unsigned int           max_alike_rounds,
+                                const std::function<bool()> &reflag,
                                 const std::function<void()> &setup,
                                 TimerOutput                 &timer)
     {
@@ -44,37 +45,47 @@ namespace rupture
       timer.leave_subsection();
       timer.enter_subsection("Refinement: new mesh");
       mesh.execute_coarsening_and_refinement();
-      // The mesh's balance (p4est's, which sees all processes) may have
-      // refined or coarsened a cell on one side of the fault only, and the
-      // fault's node pairs need both sides alike: before the fault is set
-      // up, the fields go to this mesh on its DoFs alone, the cells that
-      // lack a level are refined, and the fields go on to that mesh.
-      for (unsigned int k = 0;
-           fault && k < max_alike_rounds && flag_fault_alike();
-           ++k)
+      // The fields go on through every mesh that is not yet the final one,
+      // on its DoFs alone (its fault and operators are not set up):
+      // - the mesh's balance (p4est's, which sees all processes) may have
+      //   refined or coarsened a cell on one side of the fault only, and
+      //   the fault's node pairs need both sides alike: the cells that lack
+      //   a level are refined;
+      // - @p reflag flags the next level of this adaptation.
+      const auto go_on = [&]() {
+        distribute_dofs();
+        std::vector<Distributed *> here;
+        for (auto &v : values)
+          {
+            v.reinit(owned, relevant, mpi_communicator);
+            here.push_back(&v);
+          }
+        transfer->interpolate(here);
+        // As before the first transfer: hanging DoFs follow their
+        // constraints, or a DoF that a cell coarsened next to a finer one
+        // made hanging gets two values where it stops hanging.
+        AffineConstraints<double> constraints(relevant);
+        DoFTools::make_hanging_node_constraints(dofs, constraints);
+        constraints.close();
+        for (auto &v : values)
+          {
+            constraints.distribute(v);
+            v.update_ghost_values();
+          }
+        transfer = std::make_unique<Transfer>(dofs);
+        transfer->prepare_for_coarsening_and_refinement(in);
+        mesh.execute_coarsening_and_refinement();
+      };
+      unsigned int alike_rounds = 0;
+      while (true)
         {
-          distribute_dofs();
-          std::vector<Distributed *> here;
-          for (auto &v : values)
-            {
-              v.reinit(owned, relevant, mpi_communicator);
-              here.push_back(&v);
-            }
-          transfer->interpolate(here);
-          // As before the first transfer: hanging DoFs follow their
-          // constraints, or a DoF that a cell coarsened next to a finer one
-          // made hanging gets two values where it stops hanging.
-          AffineConstraints<double> constraints(relevant);
-          DoFTools::make_hanging_node_constraints(dofs, constraints);
-          constraints.close();
-          for (auto &v : values)
-            {
-              constraints.distribute(v);
-              v.update_ghost_values();
-            }
-          transfer = std::make_unique<Transfer>(dofs);
-          transfer->prepare_for_coarsening_and_refinement(in);
-          mesh.execute_coarsening_and_refinement();
+          if (fault && alike_rounds < max_alike_rounds && flag_fault_alike())
+            ++alike_rounds;
+          else if (reflag && reflag())
+            alike_rounds = 0;
+          else
+            break;
+          go_on();
         }
       timer.leave_subsection();
 

@@ -58,7 +58,9 @@ namespace rupture
           "(the default) takes n = 3 for boxes of more than 32768 cells and "
           "n = 0 otherwise; or give n from 0 to 4. A uniform or layered box "
           "uses the largest n up to this one that divides its numbers of "
-          "cells; a graded box halves its largest outer cells where needed "
+          "cells (a layered box: also the cells below each interface, "
+          "counted from the bottom, so that no coarse cell spans two "
+          "layers); a graded box halves its largest outer cells where needed "
           "to make the numbers of cells divisible by 2^n.");
         prm.enter_subsection("Grading");
         {

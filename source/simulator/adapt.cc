@@ -43,7 +43,7 @@ namespace rupture
         discretization.ghosted_copy(0, state.velocity));
 
     const double       energy_before = energy.kinetic + energy.strain;
-    const unsigned int pairs_before  = fault->n_split_nodes();
+    const unsigned int pairs_before  = fault ? fault->n_split_nodes() : 0;
     unsigned int       n_without     = 0;
     bool               changed       = false;
     // setup_dofs() reports each new mesh: here one line says it all.
@@ -56,17 +56,29 @@ namespace rupture
         out.set_condition(was);
       }
     } quiet{pcout};
-    // One level per pass; coarsening in the first only.
-    for (unsigned int pass = 0; pass <= mesh_refinement.levels; ++pass)
+    // One level per pass, coarsening in the first only; the state is
+    // carried once through the passes' meshes, and only the last mesh is
+    // set up. (The DoFs of a pass's mesh are estimated from its cells, for
+    // the budget.)
+    if (fault_refinement->flag(true, discretization.dof_handler().n_dofs()))
       {
-        if (!fault_refinement->flag(pass == 0,
-                                    discretization.dof_handler().n_dofs()))
-          break;
+        const auto  &mesh         = discretization.triangulation();
+        const double dofs_before  = discretization.dof_handler().n_dofs();
+        const double cells_before = mesh.n_global_active_cells();
+        unsigned int pass         = 0;
+        const auto   next_pass    = [&]() {
+          if (fault_refinement->budget_held() ||
+              ++pass > mesh_refinement.levels)
+            return false;
+          TimerOutput::Scope criteria(timer, "Adapt mesh: criteria");
+          return fault_refinement->flag(
+            false, dofs_before * mesh.n_global_active_cells() / cells_before);
+        };
         timer.leave_subsection();
         pcout.set_condition(false);
         {
           TimerOutput::Scope t(timer, "Adapt mesh: transfer");
-          n_without += execute_refinement();
+          n_without += execute_refinement(next_pass);
           // Both cells of every fault face alike (the mesh's balance may
           // have refined one side only, or coarsened one).
           for (unsigned int k = 0; k < 2 * mesh_refinement.levels + 2 &&
@@ -76,8 +88,6 @@ namespace rupture
         }
         timer.enter_subsection("Adapt mesh: criteria");
         changed = true;
-        if (fault_refinement->budget_held())
-          break;
       }
     timer.leave_subsection();
     if (fault_refinement->budget_newly_held())
@@ -99,7 +109,8 @@ namespace rupture
     // phase and the integrator, and the forces of the last step that the
     // energy sums' trapezoidal rules take up.
     assemble_physics_matrices(false);
-    fault->set_time(state.time);
+    if (fault)
+      fault->set_time(state.time);
     state.clock.start_segment(state.time, steps_done);
     prepare_phase(current_scheme(), requested_time_step, duration, true);
     if (current_scheme() == TimeIntegration::Scheme::implicit_newmark)
@@ -110,8 +121,9 @@ namespace rupture
         VectorType load(discretization.locally_owned_dofs(), communicator);
         elastic_system.assemble_load(state.time, load);
         energy.contact_force = 0;
-        fault->add_contact_force(discretization.hanging_constraints(),
-                                 energy.contact_force);
+        if (fault)
+          fault->add_contact_force(discretization.hanging_constraints(),
+                                   energy.contact_force);
         compute_acceleration(load);
       }
     refresh_step_forces();
@@ -134,13 +146,15 @@ namespace rupture
     fault_refinement->count(MPI_Wtime() - wall_start);
     pcout << "   Mesh adapted after step " << state.step << ": "
           << discretization.triangulation().n_global_active_cells()
-          << " cells, " << discretization.dof_handler().n_dofs() << " DoFs, "
-          << fault->n_split_nodes() << " fault pairs (" << pairs_before
-          << " before"
-          << (n_without > 0 ?
-                ", " + std::to_string(n_without) + " without an old pair near" :
-                std::string())
-          << "), time step " << std::setprecision(4) << state.time_step << " s";
+          << " cells, " << discretization.dof_handler().n_dofs() << " DoFs, ";
+    if (fault)
+      pcout << fault->n_split_nodes() << " fault pairs (" << pairs_before
+            << " before"
+            << (n_without > 0 ? ", " + std::to_string(n_without) +
+                                  " without an old pair near" :
+                                std::string())
+            << "), ";
+    pcout << "time step " << std::setprecision(4) << state.time_step << " s";
     if (largest_indicator >= 0)
       pcout << ", largest wavefield indicator " << largest_indicator << " 1/s";
     pcout << "\n";

@@ -522,12 +522,12 @@ namespace rupture
                                "the stable step of each mesh), but it is " +
                                std::to_string(time_parameters.time_step) +
                                " s."));
-        AssertThrow(fault != nullptr,
-                    ExcMessage("<Mesh refinement/Criteria> (rupture front, "
-                               "process zone, wavefield) adapts the mesh of "
-                               "a run with a fault, but <Fault/Model> = "
-                               "none. Allowed: a fault model, or no "
-                               "criterion."));
+        AssertThrow(fault != nullptr || (!mesh_refinement.follow_front &&
+                                         !mesh_refinement.process_zone),
+                    ExcMessage("<Mesh refinement/Criteria> = rupture front "
+                               "and process zone follow a fault, but "
+                               "<Fault/Model> = none. Allowed without a "
+                               "fault: wavefield alone."));
         AssertThrow(!mesh_refinement.wavefield ||
                       mesh_refinement.wavefield_threshold > 0,
                     ExcMessage("<Mesh refinement/Wavefield threshold> is 0, "
@@ -556,7 +556,7 @@ namespace rupture
         fault_refinement = std::make_unique<Adaptivity::FaultRefinement<dim>>(
           mesh_refinement,
           discretization.triangulation(),
-          *fault,
+          fault.get(),
           [this](const typename Triangulation<dim>::cell_iterator &cell) {
             return discretization.base_level(cell);
           },

@@ -14,7 +14,7 @@ namespace rupture
 {
   template <int dim>
   unsigned int
-  Simulator<dim>::execute_refinement()
+  Simulator<dim>::execute_refinement(const std::function<bool()> &reflag)
   {
     if (fault_refinement)
       fault_refinement->mesh_changed();
@@ -42,6 +42,7 @@ namespace rupture
     discretization.refine(
       carried,
       fault ? 2 * mesh_refinement.levels + 2 : 0,
+      reflag,
       [this]() { setup_dofs(); },
       timer);
     for (unsigned int k = 0; k < fields.size(); ++k)
@@ -66,13 +67,24 @@ namespace rupture
     // scheme, whose stable step would change with the mesh.)
     const unsigned int n_pairs_before = fault ? fault->n_split_nodes() : 0;
     unsigned int       n_without      = 0;
-    for (unsigned int level = 0; level < checkpoints.refinements; ++level)
+    // Every level at once: the state is carried through the meshes
+    // between, and only the last is set up.
+    const auto refine_all = [this]() {
+      for (const auto &cell :
+           discretization.triangulation().active_cell_iterators())
+        if (cell->is_locally_owned())
+          cell->set_refine_flag();
+    };
+    if (checkpoints.refinements > 0)
       {
-        for (const auto &cell :
-             discretization.triangulation().active_cell_iterators())
-          if (cell->is_locally_owned())
-            cell->set_refine_flag();
-        n_without += execute_refinement();
+        unsigned int level = 1;
+        refine_all();
+        n_without += execute_refinement([&]() {
+          if (level++ >= checkpoints.refinements)
+            return false;
+          refine_all();
+          return true;
+        });
       }
     // The operators of the finer mesh, the phase's integrator (set up
     // again by run_continued()), and the forces of the last step that the

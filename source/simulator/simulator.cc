@@ -85,7 +85,7 @@ namespace rupture
       pcout << "   Note: <Mesh refinement/Levels> = " << mesh_refinement.levels
             << ". More than two levels below the base mesh have made the "
                "final slip too large (TPV3 in 3-D, three levels below 750 m "
-               "cells: +9.7 % at the reference station, +7.9 % with <Extra "
+               "cells: +5.8 % at the reference station, +4.7 % with <Extra "
                "band> = 6000; in 2-D +8 %, +1.9 % with <Extra band> = 8000: "
                "the coarse fault beyond the rupture's arrest adds to it). Two "
                "levels below base cells at most four times the front's were "

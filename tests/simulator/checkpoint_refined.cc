@@ -10,7 +10,10 @@
 // the start: the continued run ends its loading phase when the fine one
 // does and its slip is within 1 % of the fine run's (measured: the same
 // to 4 digits, where the coarse run's is 13 % and 22 % lower), its energy
-// balance closes, and it reports the refined mesh. A checkpoint in a
+// balance closes, and it reports the refined mesh. The same checkpoint
+// continued on its mesh refined twice (--refine 2: both levels made at
+// once, the state carried through the mesh between) against the sequence
+// on cells of 31.25 m from the start. A checkpoint in a
 // phase of the explicit scheme (whose stable step would change) is
 // refused with the reason, its run's files untouched.
 
@@ -83,8 +86,32 @@ main(int argc, char **argv)
     {
       coarse_result = result_of("continued");
       fs::remove_all("continued/checkpoint/step-000000125");
+      // A copy for the second continuation (a checkpoint continues in
+      // its own output directory only).
+      fs::remove_all("twice");
+      fs::remove_all("pristine");
+      fs::copy("continued", "pristine", fs::copy_options::recursive);
     }
   MPI_Barrier(comm);
+
+  // Continued from step 70 on the mesh refined twice; its directory then
+  // becomes "twice", and the copy "continued" again.
+  std::vector<std::string> twice = coarse;
+  for (const std::string a : {"--resume", "--refine", "2"})
+    twice.push_back(a);
+  const int code_twice = tests::run(twice);
+  MPI_Barrier(comm);
+  if (root)
+    {
+      fs::rename("continued", "twice");
+      fs::rename("pristine", "continued");
+    }
+  MPI_Barrier(comm);
+  const int code_finest = tests::run({input,
+                                      "--set",
+                                      "Output directory=finest",
+                                      "--set",
+                                      "Scene/Box/Number of cells=64"});
 
   // Continued from step 70 on the mesh refined once.
   std::vector<std::string> resume = coarse;
@@ -119,24 +146,30 @@ main(int argc, char **argv)
   const int   code_explicit = tests::run_capture(refine_explicit, errors);
   if (!root)
     return 0;
-  const Result continued = result_of("continued"), fine = result_of("fine");
-  std::printf("exit codes: coarse %d, continued %d, fine %d\n",
+  const Result continued = result_of("continued"), fine = result_of("fine"),
+               twice_result = result_of("twice"), finest = result_of("finest");
+  std::printf("exit codes: coarse %d, continued %d, fine %d, continued "
+              "twice refined %d, finest %d\n",
               code_coarse,
               code_continued,
-              code_fine);
-  {
-    const std::string log = tests::read_file("continued/log.txt");
-    const auto        at  = log.find("The checkpoint's mesh refined");
-    std::printf("%s\n",
-                at == std::string::npos ?
-                  "the refinement is not reported" :
-                  log.substr(at, log.find('\n', at) - at).c_str());
-  }
+              code_fine,
+              code_twice,
+              code_finest);
+  for (const std::string directory : {"continued", "twice"})
+    {
+      const std::string log = tests::read_file(directory + "/log.txt");
+      const auto        at  = log.find("The checkpoint's mesh refined");
+      std::printf("%s\n",
+                  at == std::string::npos ?
+                    "the refinement is not reported" :
+                    log.substr(at, log.find('\n', at) - at).c_str());
+    }
   std::printf("run        loading ends at (s)  slip at centre, side (m)  "
               "energy balance\n");
-  const char   *names[3]   = {"coarse", "continued", "fine"};
-  const Result *results[3] = {&coarse_result, &continued, &fine};
-  for (unsigned int i = 0; i < 3; ++i)
+  const char   *names[5]   = {"coarse", "continued", "fine", "twice", "finest"};
+  const Result *results[5] = {
+    &coarse_result, &continued, &fine, &twice_result, &finest};
+  for (unsigned int i = 0; i < 5; ++i)
     std::printf("%-10s %-20.1f %.4f, %.4f          %s\n",
                 names[i],
                 results[i]->loading_end,
@@ -154,7 +187,8 @@ main(int argc, char **argv)
                                                                      "no");
   for (unsigned int s = 0; s < 2; ++s)
     std::printf("slip at %s: the continued run within 1 %% of the fine one: "
-                "%s, nearer to it than the coarse run: %s\n",
+                "%s, nearer to it than the coarse run: %s; twice refined "
+                "within 1 %% of the finest: %s\n",
                 s == 0 ? "centre" : "side",
                 std::abs(continued.slip[s] - fine.slip[s]) <
                     0.01 * std::abs(fine.slip[s]) ?
@@ -162,6 +196,10 @@ main(int argc, char **argv)
                   "no",
                 std::abs(continued.slip[s] - fine.slip[s]) <
                     std::abs(coarse_result.slip[s] - fine.slip[s]) ?
+                  "yes" :
+                  "no",
+                std::abs(twice_result.slip[s] - finest.slip[s]) <
+                    0.01 * std::abs(finest.slip[s]) ?
                   "yes" :
                   "no");
 }

@@ -44,7 +44,8 @@ namespace rupture
      * (only coarsened, to its base level: the level of the mesh as set up,
      * which @p base_level gives). The wavefield criterion judges every cell
      * by itself; a cell is refined if one criterion asks for it and
-     * coarsened only if all allow it.
+     * coarsened only if all allow it. Without a fault (@p fault null) only
+     * the wavefield criterion can be chosen.
      */
     template <int dim>
     class FaultRefinement
@@ -55,7 +56,7 @@ namespace rupture
       FaultRefinement(
         const Parameters                                  &parameters,
         dealii::parallel::distributed::Triangulation<dim> &triangulation,
-        const Fault::Fault<dim>                           &fault,
+        const Fault::Fault<dim>                           *fault,
         std::function<unsigned int(const CellIterator &)>  base_level,
         const unsigned int                                 degree);
 
@@ -182,7 +183,7 @@ namespace rupture
 
       const Parameters                                  &parameters;
       dealii::parallel::distributed::Triangulation<dim> &triangulation;
-      const Fault::Fault<dim>                           &fault;
+      const Fault::Fault<dim>                           *fault;
       std::function<unsigned int(const CellIterator &)>  base_level;
       const unsigned int                                 degree;
       const MPI_Comm                                     communicator;

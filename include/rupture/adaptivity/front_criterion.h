@@ -38,7 +38,7 @@ namespace rupture
       FrontCriterion(const std::vector<dealii::Point<dim>> &active,
                      const double                           band)
         : band(band)
-        , cloud(active, std::max(2 * band, 1e-300))
+        , cloud(active)
       {}
 
       Decision

@@ -108,7 +108,11 @@ namespace rupture
        * of the current DoFs, their hanging DoFs distributed) to the new
        * DoFs. The mesh's balance may leave a fault face with one side finer
        * than the other: up to @p max_alike_rounds more rounds refine those
-       * cells (the fields carried through each). @p setup is called once
+       * cells (the fields carried through each). Then @p reflag (if given)
+       * may flag the cells of the next level of the same adaptation and
+       * say whether it flagged any: the fields go on through that mesh too
+       * (an adaptation of several levels carries them once, through meshes
+       * whose DoFs alone are set up). @p setup is called once
        * the mesh is final, before the fields are interpolated to it: it
        * distributes the DoFs and sets up what depends on them (step-75's
        * setup_system()). Times its parts in @p timer ("Refinement: ...").
@@ -117,6 +121,7 @@ namespace rupture
       void
       refine(std::vector<VectorType>     &fields,
              const unsigned int           max_alike_rounds,
+             const std::function<bool()> &reflag,
              const std::function<void()> &setup,
              TimerOutput                 &timer);
       /// The level a cell had before any adaptation: the scene's own

@@ -131,10 +131,12 @@ namespace rupture
     /// Refine and coarsen the mesh as flagged, carry the displacement,
     /// velocity and acceleration and the fault's state to the new mesh and
     /// set up its DoFs (refine.cc); the energy sums' forces are left to
-    /// refresh_step_forces(). Returns the number of new fault pairs that
-    /// had no old pair near.
+    /// refresh_step_forces(). @p reflag may flag the next level of the same
+    /// adaptation on each new mesh (Discretization::refine()): the state is
+    /// then carried once through all of them, and only the last is set up.
+    /// Returns the number of new fault pairs that had no old pair near.
     unsigned int
-    execute_refinement();
+    execute_refinement(const std::function<bool()> &reflag = {});
     /**
      * Adapt the mesh to the criteria of <Mesh refinement> after the
      * current step of the phase of @p duration (run with the requested
