@@ -63,8 +63,8 @@ namespace wavefield_runs
     return largest > 0 ? worst / largest : 1e9;
   }
 
-  /// The sum over the steps of the DoFs (statistics column 24, with
-  /// <Mesh refinement>), and their peak.
+  /// The sum over the steps of the DoFs (the statistics' column "Degrees
+  /// of freedom", with <Mesh refinement>), and their peak.
   inline std::pair<double, double>
   dof_steps(const std::string &directory)
   {
