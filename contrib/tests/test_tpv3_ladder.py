@@ -108,3 +108,33 @@ def test_peak_dofs_and_dof_steps_from_the_statistics(script, tmp_path):
     # Without the column: the summary's DoFs times the steps.
     (tmp_path / "statistics").write_text("# 1: Time step number\n# 2: Time (s)\n0 0\n1 0.1\n")
     assert ladder.dof_measures(str(tmp_path), 200, 3) == (200, 600.0)
+
+
+def test_mpirun_runs_as_root_and_oversubscribed(script, tmp_path, monkeypatch):
+    """--np N starts mpirun with Open MPI's run-as-root variables (CI and
+    containers run as root; before 2026-12-06 the ladder failed at once
+    there) and the same command as the other scripts (runs.mpi_prefix)."""
+    from rupturetools import runs
+    assert runs.mpi_prefix(1) == []
+    assert runs.mpi_prefix(2) == ["mpirun", "--oversubscribe", "-np", "2"]
+    env = runs.mpi_env()
+    assert env["OMPI_ALLOW_RUN_AS_ROOT"] == "1"
+    assert env["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] == "1"
+
+    ladder = script("tpv3-ladder")
+    seen = {}
+
+    class Failed:
+        returncode = 1
+        stderr = "stopped by the test"
+
+    def fake_run(args, **kwargs):
+        seen["args"], seen["env"] = args, kwargs.get("env")
+        return Failed()
+
+    monkeypatch.setattr(ladder.subprocess, "run", fake_run)
+    row = ladder.run("/bin/rupture", "explicit", 1500.0, str(tmp_path), "graded", 0.0, [],
+                     "", "edges", 2)
+    assert row is None
+    assert seen["args"][:5] == ["mpirun", "--oversubscribe", "-np", "2", "/bin/rupture"]
+    assert seen["env"]["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] == "1"
