@@ -32,15 +32,6 @@ namespace rupture
 
     template <int dim>
     bool
-    PointCloud<dim>::empty() const
-    {
-      return tree->rtree.empty();
-    }
-
-
-
-    template <int dim>
-    bool
     PointCloud<dim>::any_within(const dealii::Point<dim> &x,
                                 const double              r) const
     {

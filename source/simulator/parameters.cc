@@ -524,10 +524,11 @@ namespace rupture
                                " s."));
         AssertThrow(fault != nullptr || (!mesh_refinement.follow_front &&
                                          !mesh_refinement.process_zone),
-                    ExcMessage("<Mesh refinement/Criteria> = rupture front "
-                               "and process zone follow a fault, but "
-                               "<Fault/Model> = none. Allowed without a "
-                               "fault: wavefield alone."));
+                    ExcMessage("<Mesh refinement/Criteria> = " +
+                               prm.get({"Mesh refinement"}, "Criteria") +
+                               ": rupture front and process zone follow a "
+                               "fault, but <Fault/Model> = none. Allowed "
+                               "without a fault: wavefield alone."));
         AssertThrow(!mesh_refinement.wavefield ||
                       mesh_refinement.wavefield_threshold > 0,
                     ExcMessage("<Mesh refinement/Wavefield threshold> is 0, "

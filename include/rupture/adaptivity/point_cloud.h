@@ -24,9 +24,6 @@ namespace rupture
       explicit PointCloud(const std::vector<dealii::Point<dim>> &points);
       ~PointCloud();
 
-      bool
-      empty() const;
-
       /// Whether a point of the set lies within @p r of @p x.
       bool
       any_within(const dealii::Point<dim> &x, const double r) const;
