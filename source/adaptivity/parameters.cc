@@ -118,6 +118,23 @@ namespace rupture
                           Patterns::Double(0),
                           "Distance (m) added to the band ahead of the "
                           "front that is refined.");
+        prm.declare_entry(
+          "Balance after adaptation",
+          "true",
+          Patterns::Bool(),
+          "In the implicit dynamic phase of a run with a loading phase: "
+          "after each adaptation, move the displacement into the new mesh's "
+          "static balance with the carried velocity and acceleration (a "
+          "Newton solve at the present time; the prescribed boundary "
+          "values and the fault's accepted state stay). The loaded body's "
+          "stresses were those of the coarser mesh, and out of balance on "
+          "the new nodes; without it the imbalance acts on them as a "
+          "sudden force (in the Northeast-Japan model it opened the "
+          "fault and the run ran away, doc/manual.md 3.1). The energy the "
+          "balance changes counts with the mesh's (statistics column "
+          "'Energy added by mesh changes'). Other schemes: no effect (a "
+          "quasi-static step balances anyway; the explicit scheme has no "
+          "solve to do it with).");
       }
       prm.leave_subsection();
     }
@@ -148,6 +165,7 @@ namespace rupture
       slip_rate_threshold = prm.get_double("Slip rate threshold");
       coarsening_delay    = prm.get_double("Coarsening delay");
       extra_band          = prm.get_double("Extra band");
+      balance             = prm.get_bool("Balance after adaptation");
       wavefield_threshold = prm.get_double("Wavefield threshold");
       wavefield_levels    = prm.get_integer("Wavefield levels");
       prm.leave_subsection();

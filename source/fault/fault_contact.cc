@@ -49,7 +49,21 @@ namespace rupture
               dofs[c]       = pair.minus[c];
               dofs[dim + c] = pair.plus[c];
             }
-          if (pair.forced && forced_slip_active)
+          if (held)
+            {
+              // Stuck from the accepted plastic slip (a slip imposed to be
+              // where it was); the friction coefficient stays as it was.
+              const double friction = pair.trial.friction;
+              pair.trial            = forced_slip_response<dim>(delta,
+                                                     pair.normal,
+                                                     pair.initial_traction,
+                                                     pair.normal_penalty,
+                                                     pair.tangential_penalty,
+                                                     pair.plastic_slip,
+                                                     pair.plastic_slip);
+              pair.trial.friction   = friction;
+            }
+          else if (pair.forced && forced_slip_active)
             pair.trial = forced_slip_response<dim>(delta,
                                                    pair.normal,
                                                    pair.initial_traction,

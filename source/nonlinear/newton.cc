@@ -124,7 +124,40 @@ namespace rupture
                        const std::function<void()> &update_rates,
                        const std::function<void()> &compute_residual,
                        VectorType                  &residual,
-                       const VectorType            *predicted_increment)
+                       const VectorType            *predicted_increment,
+                       const bool                   hold)
+    {
+      // A balance at a fixed time: every closed pair sticks for the solve
+      // (the fault's forces follow its springs only).
+      struct Release
+      {
+        Fault::Fault<dim> *fault;
+        ~Release()
+        {
+          if (fault)
+            fault->hold(false);
+        }
+      } release{hold ? fault : nullptr};
+      if (release.fault)
+        release.fault->hold(true);
+      solve_once(old_u,
+                 update_rates,
+                 compute_residual,
+                 residual,
+                 predicted_increment,
+                 hold);
+    }
+
+
+
+    template <int dim>
+    void
+    Newton<dim>::solve_once(const VectorType            &old_u,
+                            const std::function<void()> &update_rates,
+                            const std::function<void()> &compute_residual,
+                            VectorType                  &residual,
+                            const VectorType            *predicted_increment,
+                            const bool                   hold)
     {
       VectorType free_residual(residual), increment(residual),
         scratch(residual);
@@ -138,10 +171,11 @@ namespace rupture
           discretization.increment_constraints().set_zero(scratch);
           state.displacement += scratch;
         }
-      discretization.impose_kinematic_motion(state.displacement,
-                                             state.displacement,
-                                             state.time,
-                                             state.time_step);
+      if (!hold)
+        discretization.impose_kinematic_motion(state.displacement,
+                                               state.displacement,
+                                               state.time,
+                                               state.time_step);
       discretization.distribute_hanging(state.displacement);
 
       double reference = 0;

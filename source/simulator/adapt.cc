@@ -26,10 +26,16 @@ namespace rupture
     const double       wall_start = MPI_Wtime();
 
     timer.enter_subsection("Adapt mesh: criteria");
+    // A quasi-static phase has no waves and no front: no band ahead of
+    // the active nodes (a P wave's travel over a loading step would cover
+    // the whole fault), and nodes at their strength before its first step
+    // do not count (the dynamic phase refines where it nucleates).
+    const bool quasi_static =
+      current_scheme() == TimeIntegration::Scheme::quasi_static;
     fault_refinement->evaluate(
       state.clock.phase_time,
-      steps_done == 0,
-      fastest_wave_speed,
+      steps_done == 0 && !quasi_static,
+      quasi_static ? 0. : fastest_wave_speed,
       state.time_step,
       current_scheme() == TimeIntegration::Scheme::explicit_central_difference);
 
@@ -113,6 +119,7 @@ namespace rupture
       fault->set_time(state.time);
     state.clock.start_segment(state.time, steps_done);
     prepare_phase(current_scheme(), requested_time_step, duration, true);
+    quiet.out.set_condition(quiet.was);
     if (current_scheme() == TimeIntegration::Scheme::implicit_newmark)
       {
         // Newmark's energy identity holds for an acceleration that is in
@@ -120,6 +127,9 @@ namespace rupture
         // the interpolated one is not on the new mesh.
         VectorType load(discretization.locally_owned_dofs(), communicator);
         elastic_system.assemble_load(state.time, load);
+        if (mesh_refinement.balance && time_parameters.loading_phase &&
+            state.clock.in_dynamic_phase)
+          balance_after_adaptation();
         energy.contact_force = 0;
         if (fault)
           fault->add_contact_force(discretization.hanging_constraints(),
@@ -127,7 +137,6 @@ namespace rupture
         compute_acceleration(load);
       }
     refresh_step_forces();
-    quiet.out.set_condition(quiet.was);
 
     // The energy the interpolation added, counted apart so that the
     // budget stays closed.
@@ -159,6 +168,32 @@ namespace rupture
       pcout << ", largest wavefield indicator " << largest_indicator << " 1/s";
     pcout << "\n";
     return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::balance_after_adaptation()
+  {
+    try
+      {
+        const unsigned int n = integrator->balance_displacement();
+        ++balance_report.adaptations;
+        balance_report.iterations += n;
+      }
+    catch (const std::exception &failure)
+      {
+        // The carried state goes on as it is (as without the balance).
+        const auto *newton =
+          dynamic_cast<const Solver::NewtonFailure *>(&failure);
+        ++balance_report.failures;
+        pcout << "   The displacement could not be balanced on the new "
+                 "mesh after step "
+              << state.step << " ("
+              << (newton ? newton->reason : std::string(failure.what()))
+              << "): the run goes on with the interpolated one.\n";
+      }
   }
 
 

@@ -38,9 +38,14 @@ namespace rupture
     if (mesh_refinement.enabled())
       pcout << "   Mesh refinement: " << fault_refinement->n_adaptations()
             << " adaptations in " << fault_refinement->seconds()
-            << " s (the first before the time loop, the others in it), "
+            << " s (with the one before the first step, if made), "
             << cost.peak_dofs << " DoFs at the peak, " << cost.dof_steps
             << " DoF-steps\n";
+    if (balance_report.adaptations + balance_report.failures > 0)
+      pcout << "   Balance after adaptation: " << balance_report.adaptations
+            << " new meshes balanced in " << balance_report.iterations
+            << " Newton iterations, " << balance_report.failures
+            << " not balanced (the solve failed)\n";
     pcout << "   Peak memory: " << peak_max / 1048576.
           << " MB on the largest rank, " << peak_sum / 1048576.
           << " MB on all ranks, " << peak_sum / double(n_dofs)
@@ -172,7 +177,11 @@ namespace rupture
           << "  \"peak dofs\": " << json_number(cost.peak_dofs) << ",\n"
           << "  \"dof-steps\": " << json_number(cost.dof_steps) << ",\n"
           << "  \"adaptation wall time\": "
-          << json_number(test_mode ? 0. : fault_refinement->seconds()) << ",\n";
+          << json_number(test_mode ? 0. : fault_refinement->seconds()) << ",\n"
+          << "  \"balanced adaptations\": " << balance_report.adaptations
+          << ",\n"
+          << "  \"balance iterations\": " << balance_report.iterations << ",\n"
+          << "  \"balances failed\": " << balance_report.failures << ",\n";
     // What the stability studies read: the explicit scheme's stable step
     // (null where none was computed), the last step, the steps cut in half.
     out << "  \"stable time step\": "

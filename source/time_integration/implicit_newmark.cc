@@ -190,6 +190,62 @@ namespace rupture
 
 
     template <int dim>
+    unsigned int
+    ImplicitNewmark<dim>::balance_displacement()
+    {
+      Context<dim>      &s = this->context;
+      TimerOutput::Scope t(s.timer, "Implicit step: balance a new mesh");
+      const VectorType   old_u(s.state.displacement);
+      VectorType         load(old_u), residual(old_u), tmp(old_u);
+      // The forces that stay: the loads less the carried inertia and
+      // damping. The fault is held stuck on its springs (a sliding,
+      // weakening fault has no static balance).
+      s.system.assemble_load(s.state.time, load);
+      s.system.apply_mass(s.state.acceleration, tmp);
+      load -= tmp;
+      s.system.damping_force(s.state.velocity, tmp);
+      load -= tmp;
+      const auto compute_residual = [&]() {
+        residual = load;
+        s.system.apply_stiffness(s.state.displacement, tmp);
+        residual -= tmp;
+        if (s.fault)
+          {
+            tmp = 0;
+            s.nonlinear.add_contact_force(tmp);
+            residual -= tmp;
+          }
+      };
+      // (The counts of the last step stay what its report says.)
+      const unsigned int step_iterations = s.newton.last_iterations,
+                         step_linear     = s.newton.last_linear_iterations;
+      const auto restore_counts          = [&]() {
+        s.newton.last_iterations        = step_iterations;
+        s.newton.last_linear_iterations = step_linear;
+      };
+      s.newton.may_cut = false;
+      s.system.set_effective_stiffness(1, 0, 0);
+      try
+        {
+          s.nonlinear.solve(
+            old_u, []() {}, compute_residual, residual, nullptr, true);
+        }
+      catch (...)
+        {
+          restore_counts();
+          s.state.displacement = old_u;
+          set_time_step(s.state.time_step);
+          throw;
+        }
+      set_time_step(s.state.time_step);
+      const unsigned int iterations = s.newton.last_iterations;
+      restore_counts();
+      return iterations;
+    }
+
+
+
+    template <int dim>
     void
     ImplicitNewmark<dim>::substep()
     {

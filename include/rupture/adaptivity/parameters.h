@@ -54,6 +54,10 @@ namespace rupture
       double coarsening_delay = -1;
       /// Added to the band ahead of the front (m).
       double extra_band = 0;
+      /// After each adaptation in an implicit dynamic phase that follows a
+      /// loading phase: move the displacement into balance on the new mesh
+      /// (TimeIntegration::Interface::balance_displacement()).
+      bool balance = true;
 
       static void
       declare_parameters(dealii::ParameterHandler &prm);

@@ -199,6 +199,19 @@ namespace rupture
                const double                     sign = 1);
 
       /**
+       * While @p on, assemble() holds every pair that is closed in place:
+       * it sticks on its penalty springs from its accepted plastic slip,
+       * whatever its strength (no friction law, no forced slip), and opens
+       * under tension as always. A balance of the body at a fixed time
+       * (after a mesh change), not a step.
+       */
+      void
+      hold(const bool on)
+      {
+        held = on;
+      }
+
+      /**
        * Add the contact forces of the pairs' tractions of the last
        * assemble() (or of the state carried to a new mesh) to @p force,
        * without return-mapping again.
@@ -781,9 +794,11 @@ namespace rupture
       std::unique_ptr<FunctionParser<dim>> forced_slip;
       Tensor<1, dim>                       forced_direction;
       /// Forced slip acts in the dynamic phase (from its start) only.
-      bool   forced_slip_active = true;
-      double dynamic_start      = 0;
-      double current_time       = 0;
+      bool forced_slip_active = true;
+      /// hold(): every closed pair sticks (no friction, no forced slip).
+      bool   held          = false;
+      double dynamic_start = 0;
+      double current_time  = 0;
 
       // Locally owned pairs (owned by the owner of the minus DoF of
       // component 0).

@@ -111,7 +111,8 @@ namespace rupture
             const std::function<void()> &update_rates,
             const std::function<void()> &compute_residual,
             VectorType                  &residual,
-            const VectorType            *predicted_increment) override;
+            const VectorType            *predicted_increment,
+            const bool                   hold) override;
       void
       add_contact_force(VectorType &force) override
       {
@@ -129,6 +130,16 @@ namespace rupture
                        const double sign);
 
     private:
+      /// solve() once the fault is held or not (@p hold: the prescribed
+      /// DoFs keep their values).
+      void
+      solve_once(const VectorType            &old_displacement,
+                 const std::function<void()> &update_rates,
+                 const std::function<void()> &compute_residual,
+                 VectorType                  &residual,
+                 const VectorType            *predicted_increment,
+                 const bool                   hold);
+
       /// Throw Solver::NewtonFailure for iteration @p norm / @p reference
       /// (@p stalled or at the limit), with the diagnosis.
       [[noreturn]] void

@@ -150,6 +150,12 @@ namespace rupture
     adapt_mesh(const double       duration,
                const double       requested_time_step,
                const unsigned int steps_done);
+    /// After an adaptation in the implicit dynamic phase of a run with a
+    /// loading phase: the integrator moves the displacement into balance
+    /// on the new mesh (<Mesh refinement/Balance after adaptation>); a
+    /// failed solve leaves the interpolated state and says so.
+    void
+    balance_after_adaptation();
     /// The time step the current phase asks for (0: the explicit
     /// scheme's Courant fraction of the stable step).
     double
@@ -417,6 +423,14 @@ namespace rupture
     /// coarsens, and how many adaptations it made (with <Mesh refinement>
     /// only).
     std::unique_ptr<Adaptivity::FaultRefinement<dim>> fault_refinement;
+    /// What balance_after_adaptation() did: adaptations balanced, their
+    /// Newton iterations, solves that failed.
+    struct
+    {
+      unsigned int  adaptations = 0;
+      unsigned long iterations  = 0;
+      unsigned int  failures    = 0;
+    } balance_report;
   };
 } // namespace rupture
 

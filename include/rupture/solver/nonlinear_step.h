@@ -29,7 +29,10 @@ namespace rupture
        * @p old_displacement plus @p predicted_increment (if given) and the
        * prescribed boundary motion. @p update_rates sets the velocity and
        * acceleration from the displacement; @p compute_residual sets
-       * @p residual (all forces but the inertia already included). Throws
+       * @p residual (all forces but the inertia already included). With
+       * @p hold (a balance at a fixed time, not a step) the prescribed DoFs
+       * keep their values of @p old_displacement and every closed fault
+       * pair sticks on its springs (Fault::hold()). Throws
        * Solver::NewtonFailure if Newton's method does not converge.
        */
       virtual void
@@ -37,7 +40,8 @@ namespace rupture
             const std::function<void()> &update_rates,
             const std::function<void()> &compute_residual,
             VectorType                  &residual,
-            const VectorType            *predicted_increment = nullptr) = 0;
+            const VectorType            *predicted_increment = nullptr,
+            const bool                   hold                = false) = 0;
 
       /// Add the fault's contact forces at the current displacement to
       /// @p force.

@@ -29,6 +29,12 @@ namespace rupture
       prepare() override;
       void
       step() override;
+      /// The static balance f - M a - C v - K u - F_contact = 0 solved for
+      /// u at the present time, with a and v as carried, every closed
+      /// fault pair stuck on its springs (its accepted state unchanged) and
+      /// the prescribed DoFs kept.
+      unsigned int
+      balance_displacement() override;
 
       void
       save_scheme(BinaryIO::Records &records) const override;

@@ -59,6 +59,24 @@ namespace rupture
       step() = 0;
 
       /**
+       * After the mesh changed under the phase (the state interpolated to
+       * the new mesh, prepare() called again): move the displacement into
+       * balance with the carried velocity and acceleration, where the
+       * scheme can. A loaded body's interpolated displacement is not in
+       * balance on a finer mesh (its stresses were the coarse mesh's), and
+       * the imbalance would otherwise act on the new nodes as a sudden
+       * force. Returns the number of Newton iterations, 0 where the scheme
+       * does nothing (default); if the solve fails (Solver::NewtonFailure,
+       * or the linear solver's error where no boundary holds a part of
+       * the body) it throws with the state as it was. Collective.
+       */
+      virtual unsigned int
+      balance_displacement()
+      {
+        return 0;
+      }
+
+      /**
        * Whether the steps change from step to step (a controller other than
        * "fixed"): the time loop then asks next_time_step() before each step
        * and goes by time, not by a number of steps.
