@@ -120,37 +120,10 @@ namespace rupture
     state.clock.start_segment(state.time, steps_done);
     prepare_phase(current_scheme(), requested_time_step, duration, true);
     quiet.out.set_condition(quiet.was);
-    if (current_scheme() == TimeIntegration::Scheme::implicit_newmark)
-      {
-        // Newmark's energy identity holds for an acceleration that is in
-        // balance with the forces (M a = f - K u - C v - contact), which
-        // the interpolated one is not on the new mesh.
-        VectorType load(discretization.locally_owned_dofs(), communicator);
-        elastic_system.assemble_load(state.time, load);
-        if (mesh_refinement.balance && time_parameters.loading_phase &&
-            state.clock.in_dynamic_phase)
-          balance_after_adaptation();
-        energy.contact_force = 0;
-        if (fault)
-          fault->add_contact_force(discretization.hanging_constraints(),
-                                   energy.contact_force);
-        compute_acceleration(load);
-      }
+    settle_on_new_mesh();
     refresh_step_forces();
 
-    // The energy the interpolation added, counted apart so that the
-    // budget stays closed.
-    VectorType product(discretization.locally_owned_dofs(), communicator);
-    elastic_system.apply_stiffness(state.displacement, product);
-    discretization.hanging_constraints().set_zero(product);
-    energy.strain = 0.5 * (state.displacement * product);
-    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
-      {
-        elastic_system.apply_mass(state.velocity, product);
-        discretization.hanging_constraints().set_zero(product);
-        energy.kinetic = 0.5 * (state.velocity * product);
-      }
-    energy.remeshing += energy.kinetic + energy.strain - energy_before;
+    count_mesh_change_energy(energy_before);
 
     fault_refinement->count(MPI_Wtime() - wall_start);
     pcout << "   Mesh adapted after step " << state.step << ": "
@@ -168,6 +141,51 @@ namespace rupture
       pcout << ", largest wavefield indicator " << largest_indicator << " 1/s";
     pcout << "\n";
     return true;
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::settle_on_new_mesh()
+  {
+    if (current_scheme() != TimeIntegration::Scheme::implicit_newmark)
+      return;
+    // Newmark's energy identity holds for an acceleration that is in
+    // balance with the forces (M a = f - K u - C v - contact), which the
+    // interpolated one is not on the new mesh; a loaded body's
+    // displacement is first moved into the new mesh's balance.
+    VectorType load(discretization.locally_owned_dofs(), communicator);
+    elastic_system.assemble_load(state.time, load);
+    if (mesh_refinement.balance && time_parameters.loading_phase &&
+        state.clock.in_dynamic_phase)
+      balance_after_adaptation();
+    energy.contact_force = 0;
+    if (fault)
+      fault->add_contact_force(discretization.hanging_constraints(),
+                               energy.contact_force);
+    compute_acceleration(load);
+  }
+
+
+
+  template <int dim>
+  void
+  Simulator<dim>::count_mesh_change_energy(const double energy_before)
+  {
+    // The energy the interpolation (and the balance) added, counted apart
+    // so that the budget stays closed.
+    VectorType product(discretization.locally_owned_dofs(), communicator);
+    elastic_system.apply_stiffness(state.displacement, product);
+    discretization.hanging_constraints().set_zero(product);
+    energy.strain = 0.5 * (state.displacement * product);
+    if (current_scheme() != TimeIntegration::Scheme::quasi_static)
+      {
+        elastic_system.apply_mass(state.velocity, product);
+        discretization.hanging_constraints().set_zero(product);
+        energy.kinetic = 0.5 * (state.velocity * product);
+      }
+    energy.remeshing += energy.kinetic + energy.strain - energy_before;
   }
 
 

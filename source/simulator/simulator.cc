@@ -301,6 +301,18 @@ namespace rupture
                     phase_duration(),
                     true);
     integrator->load(checkpoints.records);
+    // A checkpoint of an implicit phase refined by --refine: as after an
+    // adaptation, a loaded body's displacement moves into the finer mesh's
+    // balance and the acceleration follows from the forces (without, the
+    // energy balance of a dynamic phase did not close).
+    if (checkpoints.refinements > 0 &&
+        current_scheme() == TimeIntegration::Scheme::implicit_newmark)
+      {
+        const double energy_before = energy.kinetic + energy.strain;
+        settle_on_new_mesh();
+        refresh_step_forces();
+        count_mesh_change_energy(energy_before);
+      }
     run_phases(state.clock.steps_in_phase);
   }
 

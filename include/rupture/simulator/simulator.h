@@ -156,6 +156,16 @@ namespace rupture
     /// failed solve leaves the interpolated state and says so.
     void
     balance_after_adaptation();
+    /// Implicit Newmark on a new mesh (an adaptation, --refine): a loaded
+    /// body's displacement balanced (balance_after_adaptation()), then the
+    /// acceleration from the forces. Other schemes: nothing.
+    void
+    settle_on_new_mesh();
+    /// The kinetic and strain energy of the state on the present mesh, and
+    /// their change from @p energy_before (the old mesh's) added to
+    /// EnergyBudget::remeshing.
+    void
+    count_mesh_change_energy(const double energy_before);
     /// The time step the current phase asks for (0: the explicit
     /// scheme's Courant fraction of the stable step).
     double
