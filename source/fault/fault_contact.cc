@@ -52,16 +52,20 @@ namespace rupture
           if (held)
             {
               // Stuck from the accepted plastic slip (a slip imposed to be
-              // where it was); the friction coefficient stays as it was.
-              const double friction = pair.trial.friction;
-              pair.trial            = forced_slip_response<dim>(delta,
+              // where it was, in the fault's plane as a return mapping's
+              // stick is); the friction coefficient stays as it was.
+              const double         friction = pair.trial.friction;
+              const Tensor<1, dim> in_plane =
+                pair.plastic_slip -
+                (pair.plastic_slip * pair.normal) * pair.normal;
+              pair.trial          = forced_slip_response<dim>(delta,
                                                      pair.normal,
                                                      pair.initial_traction,
                                                      pair.normal_penalty,
                                                      pair.tangential_penalty,
-                                                     pair.plastic_slip,
-                                                     pair.plastic_slip);
-              pair.trial.friction   = friction;
+                                                     in_plane,
+                                                     in_plane);
+              pair.trial.friction = friction;
             }
           else if (pair.forced && forced_slip_active)
             pair.trial = forced_slip_response<dim>(delta,

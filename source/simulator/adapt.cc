@@ -200,17 +200,30 @@ namespace rupture
         ++balance_report.adaptations;
         balance_report.iterations += n;
       }
-    catch (const std::exception &failure)
+    catch (const Solver::NewtonFailure &failure)
       {
         // The carried state goes on as it is (as without the balance).
-        const auto *newton =
-          dynamic_cast<const Solver::NewtonFailure *>(&failure);
         ++balance_report.failures;
         pcout << "   The displacement could not be balanced on the new "
                  "mesh after step "
-              << state.step << " ("
-              << (newton ? newton->reason : std::string(failure.what()))
+              << state.step << " (" << failure.reason
               << "): the run goes on with the interpolated one.\n";
+      }
+    catch (const dealii::ExceptionBase &failure)
+      {
+        // The linear solver's failures (collective: every process's
+        // Krylov iteration is the same) let the run go on alike; others
+        // end it.
+        const std::string what = failure.what();
+        if (what.find("did not converge") == std::string::npos)
+          throw;
+        ++balance_report.failures;
+        pcout << "   The displacement could not be balanced on the new "
+                 "mesh after step "
+              << state.step
+              << " (its linear solve did not converge; <Mesh "
+                 "refinement/Balance after adaptation> = false skips it): "
+                 "the run goes on with the interpolated one.\n";
       }
   }
 

@@ -216,17 +216,19 @@ namespace rupture
             residual -= tmp;
           }
       };
-      // (The counts of the last step stay what its report says.)
-      const unsigned int step_iterations = s.newton.last_iterations,
-                         step_linear     = s.newton.last_linear_iterations;
-      const auto restore_counts          = [&]() {
-        s.newton.last_iterations        = step_iterations;
-        s.newton.last_linear_iterations = step_linear;
+      // (The counts of the last step and of the phase's steps stay what
+      // their reports say.)
+      const Solver::NewtonStatus counts         = s.newton;
+      const auto                 restore_counts = [&]() {
+        s.newton.last_iterations = counts.last_iterations;
+        s.newton.last_linear_iterations = counts.last_linear_iterations;
+        s.newton.total_linear_iterations = counts.total_linear_iterations;
+        s.newton.n_linear_solves = counts.n_linear_solves;
       };
       s.newton.may_cut = false;
-      s.system.set_effective_stiffness(1, 0, 0);
       try
         {
+          s.system.set_effective_stiffness(1, 0, 0);
           s.nonlinear.solve(
             old_u, []() {}, compute_residual, residual, nullptr, true);
         }
@@ -235,9 +237,21 @@ namespace rupture
           restore_counts();
           s.state.displacement = old_u;
           set_time_step(s.state.time_step);
+          // The fault's trial state of the carried displacement again (the
+          // failed solve left its last iterate's).
+          if (s.fault)
+            {
+              tmp = 0;
+              s.nonlinear.add_contact_force(tmp);
+            }
           throw;
         }
       set_time_step(s.state.time_step);
+      // The balance slid no pair: its accepted slip is that of the
+      // balanced displacement, so that the next step's slip rate does not
+      // count the correction.
+      if (s.fault)
+        s.fault->accept_held_slip();
       const unsigned int iterations = s.newton.last_iterations;
       restore_counts();
       return iterations;

@@ -212,6 +212,19 @@ namespace rupture
       }
 
       /**
+       * After a balance with hold(): each pair's accepted slip becomes the
+       * slip of the last assemble()'s displacement (its plastic slip and
+       * friction state stay: the balance slid nothing), so that the next
+       * step's slip rate does not count the balance's correction.
+       */
+      void
+      accept_held_slip()
+      {
+        for (auto &pair : pairs)
+          pair.slip = pair.trial_slip;
+      }
+
+      /**
        * Add the contact forces of the pairs' tractions of the last
        * assemble() (or of the state carried to a new mesh) to @p force,
        * without return-mapping again.
