@@ -33,6 +33,10 @@ def test_reach_stops_at_the_first_station_beyond_the_goal(script):
     assert study.reach({"0": 0.06, "15": 0.0, "30": 0.0, "45": 0.0}, stations, 5) == -1
     assert study.reach({"0": 0.0, "15": None, "30": 0.0, "45": 0.0}, stations, 5) == 0
     assert study.reach({s: 0.0 for s in ("0", "15", "30", "45")}, stations, 5) == 4.5
+    # Both sides of a distance must be within the goal (TPV205-2D's).
+    sides = ["0", "+45", "-45", "+120", "-120"]
+    errors = {"0": 0.0, "+45": 0.01, "-45": 0.01, "+120": 0.01, "-120": 0.051}
+    assert study.reach(errors, sides, 5) == 4.5
 
 
 def test_cases_put_stations_on_nodes_and_set_the_damping(script):

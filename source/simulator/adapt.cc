@@ -26,10 +26,11 @@ namespace rupture
     const double       wall_start = MPI_Wtime();
 
     timer.enter_subsection("Adapt mesh: criteria");
-    // A quasi-static phase has no waves and no front: no band ahead of
-    // the active nodes (a P wave's travel over a loading step would cover
-    // the whole fault), and nodes at their strength before its first step
-    // do not count (the dynamic phase refines where it nucleates).
+    // A quasi-static phase has no waves and no front: no P-wave band ahead
+    // of the active nodes (only <Extra band>; a P wave's travel over a
+    // loading step would cover the whole fault), and nodes at their
+    // strength before its first step do not count (the dynamic phase
+    // refines where it nucleates).
     const bool quasi_static =
       current_scheme() == TimeIntegration::Scheme::quasi_static;
     fault_refinement->evaluate(

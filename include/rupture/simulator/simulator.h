@@ -150,10 +150,11 @@ namespace rupture
     adapt_mesh(const double       duration,
                const double       requested_time_step,
                const unsigned int steps_done);
-    /// After an adaptation in the implicit dynamic phase of a run with a
-    /// loading phase: the integrator moves the displacement into balance
-    /// on the new mesh (<Mesh refinement/Balance after adaptation>); a
-    /// failed solve leaves the interpolated state and says so.
+    /// After an adaptation (or a --refine continuation) in the implicit
+    /// dynamic phase of a run with a loading phase: the integrator moves
+    /// the displacement into balance on the new mesh (<Mesh
+    /// refinement/Balance after adaptation>); a failed solve leaves the
+    /// interpolated state and says so.
     void
     balance_after_adaptation();
     /// Implicit Newmark on a new mesh (an adaptation, --refine): a loaded

@@ -31,8 +31,9 @@ namespace rupture
       step() override;
       /// The static balance f - M a - C v - K u - F_contact = 0 solved for
       /// u at the present time, with a and v as carried, every closed
-      /// fault pair stuck on its springs (its accepted state unchanged) and
-      /// the prescribed DoFs kept.
+      /// fault pair stuck on its springs (its plastic slip and friction
+      /// state kept, its accepted slip then that of the balanced
+      /// displacement) and the prescribed DoFs kept.
       unsigned int
       balance_displacement() override;
 
