@@ -140,25 +140,7 @@ namespace rupture
       } release{hold ? fault : nullptr};
       if (release.fault)
         release.fault->hold(true);
-      solve_once(old_u,
-                 update_rates,
-                 compute_residual,
-                 residual,
-                 predicted_increment,
-                 hold);
-    }
 
-
-
-    template <int dim>
-    void
-    Newton<dim>::solve_once(const VectorType            &old_u,
-                            const std::function<void()> &update_rates,
-                            const std::function<void()> &compute_residual,
-                            VectorType                  &residual,
-                            const VectorType            *predicted_increment,
-                            const bool                   hold)
-    {
       VectorType free_residual(residual), increment(residual),
         scratch(residual);
 

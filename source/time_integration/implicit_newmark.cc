@@ -206,15 +206,7 @@ namespace rupture
       s.system.damping_force(s.state.velocity, tmp);
       load -= tmp;
       const auto compute_residual = [&]() {
-        residual = load;
-        s.system.apply_stiffness(s.state.displacement, tmp);
-        residual -= tmp;
-        if (s.fault)
-          {
-            tmp = 0;
-            s.nonlinear.add_contact_force(tmp);
-            residual -= tmp;
-          }
+        this->static_residual(load, residual, tmp);
       };
       // (The counts of the last step and of the phase's steps stay what
       // their reports say.)

@@ -93,15 +93,7 @@ namespace rupture
       s.system.assemble_load(s.state.time, load);
 
       const auto compute_residual = [&]() {
-        residual = load;
-        s.system.apply_stiffness(s.state.displacement, tmp);
-        residual -= tmp;
-        if (s.fault)
-          {
-            tmp = 0;
-            s.nonlinear.add_contact_force(tmp);
-            residual -= tmp;
-          }
+        this->static_residual(load, residual, tmp);
       };
       s.nonlinear.solve(
         old_u, []() {}, compute_residual, residual);

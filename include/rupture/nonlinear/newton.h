@@ -130,16 +130,6 @@ namespace rupture
                        const double sign);
 
     private:
-      /// solve() once the fault is held or not (@p hold: the prescribed
-      /// DoFs keep their values).
-      void
-      solve_once(const VectorType            &old_displacement,
-                 const std::function<void()> &update_rates,
-                 const std::function<void()> &compute_residual,
-                 VectorType                  &residual,
-                 const VectorType            *predicted_increment,
-                 const bool                   hold);
-
       /// Throw Solver::NewtonFailure for iteration @p norm / @p reference
       /// (@p stalled or at the limit), with the diagnosis.
       [[noreturn]] void

@@ -132,6 +132,28 @@ namespace rupture
        * @p load, the @p residual of its solve and the damping force
        * @p new_damping_force at its end.
        */
+      /**
+       * The static residual of the state's displacement: @p residual =
+       * @p forces - K u - F_contact(u) (the contact forces from the fault's
+       * return mapping at u); @p work is scratch.
+       */
+      void
+      static_residual(const VectorType &forces,
+                      VectorType       &residual,
+                      VectorType       &work)
+      {
+        Context<dim> &s = context;
+        residual        = forces;
+        s.system.apply_stiffness(s.state.displacement, work);
+        residual -= work;
+        if (s.fault)
+          {
+            work = 0;
+            s.nonlinear.add_contact_force(work);
+            residual -= work;
+          }
+      }
+
       void
       accept_step(const VectorType &old_displacement,
                   const VectorType &load,
