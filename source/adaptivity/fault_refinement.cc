@@ -255,6 +255,22 @@ namespace rupture
                                2 * time_step;
         }
       front = std::make_unique<FrontCriterion<dim>>(active, band_for(step));
+      // The wavefield's band: as far as a P wave travels until the next
+      // adaptation, with the steps to come: shorter where the front refines
+      // beyond the finest cells. (Not twice the step, as for the front: the
+      // step doubles only if no cell stays at the finest level or reaches
+      // it, and a wave above the threshold in a finest cell keeps it.)
+      if (parameters.wavefield && parameters.wavefield_band)
+        {
+          const int finest = triangulation.n_global_levels() - 1;
+          wave_band =
+            p_wave_speed *
+            parameters.time_to_next(
+              std::ldexp(time_step,
+                         std::min(0, finest - static_cast<int>(reach))));
+        }
+      else
+        wave_band = 0;
     }
 
 
@@ -266,7 +282,7 @@ namespace rupture
       const dealii::TrilinosWrappers::MPI::Vector &velocity)
     {
       wave = std::make_unique<WavefieldCriterion<dim>>(
-        dofs, velocity, parameters.wavefield_threshold);
+        dofs, velocity, parameters.wavefield_threshold, wave_band);
       return wave->largest();
     }
 

@@ -113,6 +113,18 @@ namespace rupture
                           Patterns::Integer(1, 8),
                           "Criterion \"wavefield\": how many times a cell is "
                           "refined at most beyond the base mesh.");
+        prm.declare_entry(
+          "Wavefield band",
+          "true",
+          Patterns::Bool(),
+          "Criterion \"wavefield\": also refine (and keep from coarsening) "
+          "the cells within the distance a P wave travels until the next "
+          "adaptation of a cell above <Wavefield threshold>, so that the "
+          "cells are fine before the waves reach them. Without it a wave "
+          "runs into coarse cells for up to <Interval> steps before they "
+          "are refined, and what those cells cannot carry stays behind as "
+          "grid-scale waves that hardly move and keep the cells refined "
+          "(doc/manual.md, section 3.1).");
         prm.declare_entry("Extra band",
                           "0",
                           Patterns::Double(0),
@@ -171,6 +183,7 @@ namespace rupture
       balance             = prm.get_bool("Balance after adaptation");
       wavefield_threshold = prm.get_double("Wavefield threshold");
       wavefield_levels    = prm.get_integer("Wavefield levels");
+      wavefield_band      = prm.get_bool("Wavefield band");
       prm.leave_subsection();
     }
 

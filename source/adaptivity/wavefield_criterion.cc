@@ -1,3 +1,4 @@
+#include <rupture/adaptivity/gather.h>
 #include <rupture/adaptivity/wavefield_criterion.h>
 
 #include <deal.II/base/mpi.h>
@@ -38,7 +39,8 @@ namespace rupture
     WavefieldCriterion<dim>::WavefieldCriterion(
       const dealii::DoFHandler<dim>               &dofs,
       const dealii::TrilinosWrappers::MPI::Vector &velocity,
-      const double                                 threshold)
+      const double                                 threshold,
+      const double                                 band)
       : threshold(threshold)
       , degree(dofs.get_fe_collection().max_degree())
       , indicator(dofs.get_triangulation().n_active_cells())
@@ -137,9 +139,33 @@ namespace rupture
             indicator[cell->active_cell_index()] = value;
             largest                              = std::max(largest, value);
           }
-      largest_indicator = dealii::Utilities::MPI::max(
-        largest, dofs.get_triangulation().get_communicator());
+      const MPI_Comm communicator = dofs.get_triangulation().get_communicator();
+      largest_indicator = dealii::Utilities::MPI::max(largest, communicator);
+      if (band <= 0)
+        return;
+
+      // The band: the cells above the threshold, on every process (the band
+      // crosses the processes' borders). A wave in such a cell may be
+      // anywhere in it, so the distance counts from its centre plus half
+      // its diameter (the largest such, for all of them).
+      std::vector<Point<dim>> above;
+      double                  widest = 0;
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            indicator[cell->active_cell_index()] > threshold)
+          {
+            above.push_back(cell->center());
+            widest = std::max(widest, cell->diameter());
+          }
+      sources =
+        std::make_unique<PointCloud<dim>>(all_gather(above, communicator));
+      reach = band + 0.5 * dealii::Utilities::MPI::max(widest, communicator);
     }
+
+
+
+    template <int dim>
+    WavefieldCriterion<dim>::~WavefieldCriterion() = default;
 
 
 
@@ -152,9 +178,14 @@ namespace rupture
     {
       const double       value = indicator[cell->active_cell_index()];
       const unsigned int level = cell->level();
-      if (level < finest_level && value > threshold)
+      // (Within the band: a point of the cell within the reach of a
+      // centre of a cell above the threshold.)
+      const bool in_band =
+        sources &&
+        sources->any_within(cell->center(), reach + 0.5 * cell->diameter());
+      if (level < finest_level && (value > threshold || in_band))
         return Decision::refine;
-      if (level > base_level &&
+      if (level > base_level && !in_band &&
           std::ldexp(value, static_cast<int>(degree)) < 0.5 * threshold)
         return Decision::coarsen;
       return Decision::keep;

@@ -325,13 +325,29 @@ namespace rupture
     initialize_state();
     // A mesh that follows the rupture starts refined where the fault slips
     // from the first step; the initial state is then that of the new mesh.
-    if (mesh_refinement.enabled() &&
-        adapt_mesh(phase_duration(), requested_time_step(), 0))
+    // The wavefield criterion refines one level per adaptation, each from
+    // the initial conditions interpolated on the mesh before: in a dynamic
+    // first phase it adapts up to <Wavefield levels> times before the first
+    // step, so that the initial waves start on the cells they need (not as
+    // the interpolant of coarser cells, whose error the finer cells would
+    // carry on).
+    const unsigned int rounds =
+      (mesh_refinement.wavefield &&
+       current_scheme() != TimeIntegration::Scheme::quasi_static) ?
+        mesh_refinement.wavefield_levels :
+        1;
+    bool adapted = false;
+    for (unsigned int r = 0;
+         r < rounds && mesh_refinement.enabled() &&
+         adapt_mesh(phase_duration(), requested_time_step(), 0);
+         ++r)
       {
         interpolate_initial_conditions();
         initialize_state();
-        energy.remeshing = 0;
+        adapted = true;
       }
+    if (adapted)
+      energy.remeshing = 0;
     record_memory("initial state");
 
     std::vector<std::string> columns = {"Time step number",

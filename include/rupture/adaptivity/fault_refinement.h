@@ -94,7 +94,8 @@ namespace rupture
 
       /**
        * Evaluate the criterion "wavefield" on the mesh as it is now, from
-       * the velocity @p velocity (with ghost entries) on @p dofs; the next
+       * the velocity @p velocity (with ghost entries) on @p dofs, with the
+       * band that the last evaluate() found (call that first); the next
        * flag() uses it and then forgets it (it refines one level per
        * adaptation). Returns the largest indicator (1/s). Collective.
        */
@@ -193,6 +194,8 @@ namespace rupture
       std::unique_ptr<FrontCriterion<dim>>       front;
       std::unique_ptr<WavefieldCriterion<dim>>   wave;
       bool                                       any_active = false;
+      /// The band around the cells that the wavefield refines (m).
+      double wave_band = 0;
 
       mutable std::optional<std::pair<unsigned int, bool>> levels_now;
       bool                                                 held = false;

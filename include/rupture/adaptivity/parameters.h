@@ -36,6 +36,9 @@ namespace rupture
       double wavefield_threshold = 1e-3;
       /// Levels above the base mesh that "wavefield" refines to.
       unsigned int wavefield_levels = 1;
+      /// "wavefield" also refines the band around the cells above the
+      /// threshold that a P wave crosses until the next adaptation.
+      bool wavefield_band = true;
       /// Steps between two adaptations of the mesh.
       unsigned int interval = 10;
       /// Time between two adaptations (s); 0: <Interval> steps.

@@ -2,11 +2,14 @@
 #define rupture_adaptivity_wavefield_criterion_h
 
 #include <rupture/adaptivity/front_criterion.h>
+#include <rupture/adaptivity/point_cloud.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+
+#include <memory>
 
 namespace rupture
 {
@@ -23,6 +26,9 @@ namespace rupture
      * base level, where its parent's indicator (estimated as 2^degree
      * times its own: the jump falls as h^degree) is below half the
      * threshold, so that a refined cell is not coarsened at once.
+     * With a band, the cells within that distance of a cell above the
+     * threshold are refined as well, and not coarsened: the waves move on
+     * until the next adaptation.
      */
     template <int dim>
     class WavefieldCriterion
@@ -36,7 +42,10 @@ namespace rupture
        */
       WavefieldCriterion(const dealii::DoFHandler<dim>               &dofs,
                          const dealii::TrilinosWrappers::MPI::Vector &velocity,
-                         const double threshold);
+                         const double                                 threshold,
+                         const double                                 band = 0);
+
+      ~WavefieldCriterion();
 
       Decision
       decide(const typename dealii::Triangulation<dim>::cell_iterator &cell,
@@ -55,6 +64,11 @@ namespace rupture
       unsigned int          degree;
       dealii::Vector<float> indicator;
       double                largest_indicator = 0;
+      /// The centres of the cells above the threshold on every process,
+      /// and how far from one a cell is in the band: the band plus half
+      /// the largest of those cells' diameters.
+      std::unique_ptr<PointCloud<dim>> sources;
+      double                           reach = 0;
     };
   } // namespace Adaptivity
 } // namespace rupture
