@@ -144,22 +144,37 @@ namespace rupture
       if (band <= 0)
         return;
 
-      // The band: the cells above the threshold, on every process (the band
-      // crosses the processes' borders). A wave in such a cell may be
-      // anywhere in it, so the distance counts from its centre plus half
-      // its diameter (the largest such, for all of them).
-      std::vector<Point<dim>> above;
-      double                  widest = 0;
+      // The band: the cells that hold a wave which needs their level (not
+      // coarsened: the parent's estimate at least half the threshold) or a
+      // finer one (above the threshold), with the level they need, on every
+      // process (the band crosses the processes' borders). A wave in such a
+      // cell may be anywhere in it, so the distance counts from its centre
+      // plus half its diameter (the largest such, for all of them).
+      std::vector<std::pair<Point<dim>, double>> waves;
+      double                                     widest = 0;
       for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            indicator[cell->active_cell_index()] > threshold)
+        if (cell->is_locally_owned())
           {
-            above.push_back(cell->center());
+            const double value = indicator[cell->active_cell_index()];
+            if (std::ldexp(value, static_cast<int>(degree)) < 0.5 * threshold)
+              continue;
+            waves.emplace_back(cell->center(),
+                               cell->level() + (value > threshold ? 1 : 0));
             widest = std::max(widest, cell->diameter());
           }
-      sources =
-        std::make_unique<PointCloud<dim>>(all_gather(above, communicator));
+      waves = all_gather(waves, communicator);
       reach = band + 0.5 * dealii::Utilities::MPI::max(widest, communicator);
+      // needing[l]: the centres of the cells that need level l or finer.
+      unsigned int finest = 0;
+      for (const auto &w : waves)
+        finest = std::max(finest, static_cast<unsigned int>(w.second));
+      std::vector<std::vector<Point<dim>>> points(waves.empty() ? 0 :
+                                                                  finest + 1);
+      for (const auto &w : waves)
+        for (unsigned int l = 0; l <= static_cast<unsigned int>(w.second); ++l)
+          points[l].push_back(w.first);
+      for (const auto &p : points)
+        needing.push_back(std::make_unique<PointCloud<dim>>(p));
     }
 
 
@@ -178,14 +193,16 @@ namespace rupture
     {
       const double       value = indicator[cell->active_cell_index()];
       const unsigned int level = cell->level();
-      // (Within the band: a point of the cell within the reach of a
-      // centre of a cell above the threshold.)
-      const bool in_band =
-        sources &&
-        sources->any_within(cell->center(), reach + 0.5 * cell->diameter());
-      if (level < finest_level && (value > threshold || in_band))
+      // Within the band of a wave that needs level l: a point of the cell
+      // within the reach of the centre of that wave's cell.
+      const auto near = [&](const unsigned int l) {
+        return l < needing.size() &&
+               needing[l]->any_within(cell->center(),
+                                      reach + 0.5 * cell->diameter());
+      };
+      if (level < finest_level && (value > threshold || near(level + 1)))
         return Decision::refine;
-      if (level > base_level && !in_band &&
+      if (level > base_level && !near(level) &&
           std::ldexp(value, static_cast<int>(degree)) < 0.5 * threshold)
         return Decision::coarsen;
       return Decision::keep;

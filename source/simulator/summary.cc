@@ -38,7 +38,7 @@ namespace rupture
     if (mesh_refinement.enabled())
       pcout << "   Mesh refinement: " << fault_refinement->n_adaptations()
             << " adaptations in " << fault_refinement->seconds()
-            << " s (with the one before the first step, if made), "
+            << " s (with those before the first step, if made), "
             << cost.peak_dofs << " DoFs at the peak, " << cost.dof_steps
             << " DoF-steps\n";
     if (balance_report.adaptations + balance_report.failures > 0)

@@ -10,6 +10,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <vector>
 
 namespace rupture
 {
@@ -26,9 +27,13 @@ namespace rupture
      * base level, where its parent's indicator (estimated as 2^degree
      * times its own: the jump falls as h^degree) is below half the
      * threshold, so that a refined cell is not coarsened at once.
-     * With a band, the cells within that distance of a cell above the
-     * threshold are refined as well, and not coarsened: the waves move on
-     * until the next adaptation.
+     * With a band (the distance a P wave travels until the next
+     * adaptation), a cell within it of a cell whose wave needs a finer
+     * level (one above the threshold: its level plus one; one that the
+     * indicator keeps from coarsening: its own) is refined to that level,
+     * and one within it of a cell whose wave needs its level is not
+     * coarsened: the waves move on until the next adaptation, onto cells
+     * that are fine already.
      */
     template <int dim>
     class WavefieldCriterion
@@ -64,11 +69,13 @@ namespace rupture
       unsigned int          degree;
       dealii::Vector<float> indicator;
       double                largest_indicator = 0;
-      /// The centres of the cells above the threshold on every process,
-      /// and how far from one a cell is in the band: the band plus half
-      /// the largest of those cells' diameters.
-      std::unique_ptr<PointCloud<dim>> sources;
-      double                           reach = 0;
+      /// needing[l]: the centres of the cells, on every process, that hold
+      /// a wave which needs level l or finer (a cell kept at its level by
+      /// the indicator needs its level, one above the threshold the next);
+      /// and how far from one of them a cell is in its band: the band plus
+      /// half the largest of those cells' diameters.
+      std::vector<std::unique_ptr<PointCloud<dim>>> needing;
+      double                                        reach = 0;
     };
   } // namespace Adaptivity
 } // namespace rupture
