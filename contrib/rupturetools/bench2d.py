@@ -12,6 +12,13 @@ from . import files
 STATIONS = [0, 15, 30, 45, 60, 75, 90, 120, 150]
 
 
+def parse_list(text, kind=float):
+    """The numbers of a comma-separated list (the studies' --degrees,
+    --spacing, --courant, ...), empty items left out; ValueError for an
+    item that is not a number of the kind."""
+    return [kind(x) for x in text.split(",") if x.strip()]
+
+
 def cell_size(p, spacing):
     """The cell size (m) for degree @p p nearest to node spacing @p spacing
     (not coarser) at which every station is a node: the stations lie every

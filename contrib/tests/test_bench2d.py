@@ -3,6 +3,8 @@ on station files made here."""
 
 import math
 
+import pytest
+
 from rupturetools import bench2d
 
 from stations import write_station
@@ -63,3 +65,11 @@ def test_one_side_each_keeps_the_sides_apart(tmp_path):
     ref = {"0": v["0"], "+45": v["+45"], "-45": dict(v["-45"], slip=2.0)}
     e = bench2d.errors(v, ref, stations=["0", "+45", "-45"])
     assert abs(e["slip"] - 0.5) < 1e-9 and e["rupture"] == 0.0
+
+
+def test_parse_list_reads_numbers_and_refuses_others():
+    assert bench2d.parse_list("100, 50,,25") == [100.0, 50.0, 25.0]
+    assert bench2d.parse_list("2,3,4", int) == [2, 3, 4]
+    assert bench2d.parse_list("") == []
+    with pytest.raises(ValueError):
+        bench2d.parse_list("2,three", int)
