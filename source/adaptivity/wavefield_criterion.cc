@@ -1,4 +1,3 @@
-#include <rupture/adaptivity/gather.h>
 #include <rupture/adaptivity/wavefield_criterion.h>
 
 #include <deal.II/base/mpi.h>
@@ -9,8 +8,11 @@
 #include <deal.II/hp/q_collection.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <vector>
 
 namespace rupture
 {
@@ -146,24 +148,75 @@ namespace rupture
 
       // The band: the cells that hold a wave which needs their level (not
       // coarsened: the parent's estimate at least half the threshold) or a
-      // finer one (above the threshold), with the level they need, on every
-      // process (the band crosses the processes' borders). A wave in such a
-      // cell may be anywhere in it, so the distance counts from its centre
-      // plus half its diameter (the largest such, for all of them).
-      std::vector<std::pair<Point<dim>, double>> waves;
-      double                                     widest = 0;
+      // finer one (above the threshold), with the level they need. A wave
+      // in such a cell may be anywhere in it, so the distance counts from
+      // its centre plus half its diameter (the largest such, for all of
+      // them). The band crosses the processes' borders: each process gets
+      // the waves of every process that lie in the box of its own cells'
+      // vertices widened by the reach and half its largest cell, which
+      // holds every point within the reach of one of its cells (not all
+      // waves: their number grows with the mesh).
+      std::vector<std::pair<Point<dim>, double>> mine;
+      double                                     widest = 0, own_widest = 0;
+      std::array<double, 2 * dim + 1>            box;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          box[d]       = std::numeric_limits<double>::max();
+          box[dim + d] = -std::numeric_limits<double>::max();
+        }
+      box[2 * dim] = 0; // (1: the process owns cells)
       for (const auto &cell : dofs.active_cell_iterators())
         if (cell->is_locally_owned())
           {
+            box[2 * dim] = 1;
+            own_widest   = std::max(own_widest, cell->diameter());
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  box[d]       = std::min(box[d], cell->vertex(v)[d]);
+                  box[dim + d] = std::max(box[dim + d], cell->vertex(v)[d]);
+                }
             const double value = indicator[cell->active_cell_index()];
             if (std::ldexp(value, static_cast<int>(degree)) < 0.5 * threshold)
               continue;
-            waves.emplace_back(cell->center(),
-                               cell->level() + (value > threshold ? 1 : 0));
+            mine.emplace_back(cell->center(),
+                              cell->level() + (value > threshold ? 1 : 0));
             widest = std::max(widest, cell->diameter());
           }
-      waves = all_gather(waves, communicator);
       reach = band + 0.5 * dealii::Utilities::MPI::max(widest, communicator);
+      const double margin = reach + 0.5 * own_widest;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          box[d] -= margin;
+          box[dim + d] += margin;
+        }
+      const std::vector<std::array<double, 2 *dim + 1>> boxes =
+        dealii::Utilities::MPI::all_gather(communicator, box);
+      std::map<unsigned int, std::vector<double>> out;
+      for (const auto &w : mine)
+        for (unsigned int r = 0; r < boxes.size(); ++r)
+          {
+            bool inside = boxes[r][2 * dim] > 0;
+            for (unsigned int d = 0; d < dim && inside; ++d)
+              inside =
+                w.first[d] >= boxes[r][d] && w.first[d] <= boxes[r][dim + d];
+            if (!inside)
+              continue;
+            std::vector<double> &flat = out[r];
+            for (unsigned int d = 0; d < dim; ++d)
+              flat.push_back(w.first[d]);
+            flat.push_back(w.second);
+          }
+      std::vector<std::pair<Point<dim>, double>> waves;
+      for (const auto &[rank, flat] :
+           dealii::Utilities::MPI::some_to_some(communicator, out))
+        for (std::size_t i = 0; i + dim < flat.size(); i += dim + 1)
+          {
+            Point<dim> p;
+            for (unsigned int d = 0; d < dim; ++d)
+              p[d] = flat[i + d];
+            waves.emplace_back(p, flat[i + dim]);
+          }
       // needing[l]: the centres of the cells that need level l or finer.
       unsigned int finest = 0;
       for (const auto &w : waves)
