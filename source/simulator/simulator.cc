@@ -336,7 +336,6 @@ namespace rupture
        current_scheme() != TimeIntegration::Scheme::quasi_static) ?
         mesh_refinement.wavefield_levels :
         1;
-    bool adapted = false;
     for (unsigned int r = 0;
          r < rounds && mesh_refinement.enabled() &&
          adapt_mesh(phase_duration(), requested_time_step(), 0);
@@ -344,10 +343,8 @@ namespace rupture
       {
         interpolate_initial_conditions();
         initialize_state();
-        adapted = true;
+        energy.remeshing = 0;
       }
-    if (adapted)
-      energy.remeshing = 0;
     record_memory("initial state");
 
     std::vector<std::string> columns = {"Time step number",

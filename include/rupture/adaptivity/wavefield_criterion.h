@@ -69,11 +69,12 @@ namespace rupture
       unsigned int          degree;
       dealii::Vector<float> indicator;
       double                largest_indicator = 0;
-      /// needing[l]: the centres of the cells, on every process, that hold
-      /// a wave which needs level l or finer (a cell kept at its level by
-      /// the indicator needs its level, one above the threshold the next);
-      /// and how far from one of them a cell is in its band: the band plus
-      /// half the largest of those cells' diameters.
+      /// needing[l]: the centres of the cells, of any process but within
+      /// the band's reach of this process's cells, that hold a wave which
+      /// needs level l or finer (a cell kept at its level by the indicator
+      /// needs its level, one above the threshold the next); and how far
+      /// from one of them a cell is in its band: the band plus half the
+      /// largest of those cells' diameters.
       std::vector<std::unique_ptr<PointCloud<dim>>> needing;
       double                                        reach = 0;
     };
