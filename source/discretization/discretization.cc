@@ -68,6 +68,18 @@ namespace rupture
                         "How many times the cells of <Refinement region> "
                         "are refined (each halves their size). 0 leaves the "
                         "mesh as the global refinement made it.");
+      prm.declare_entry(
+        "Fault cell weight",
+        "1",
+        Patterns::Double(1, 100),
+        "The cost of a cell with a face on the fault, in cells without "
+        "one, when the mesh is partitioned between MPI ranks (at the start "
+        "and after every adaptation): the ranks then get equal sums of "
+        "these weights instead of equal numbers of cells. Such a cell "
+        "carries the fault's node pairs (their friction) and, with "
+        "<Damping/Fault zone damping>, a second stiffness product; "
+        "doc/performance.md lists measured values. 1 balances the numbers "
+        "of cells; a single rank ignores it.");
       prm.declare_entry("Polynomial degree",
                         "1",
                         Patterns::Integer(1, 4),
@@ -100,6 +112,7 @@ namespace rupture
                                                  "region",
                                               dim == 2 ? "x,y" : "x,y,z");
       fe_degree = prm.get_integer("Polynomial degree");
+      fault_cell_weight = prm.get_double("Fault cell weight");
     }
 
 

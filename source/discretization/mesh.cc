@@ -134,6 +134,74 @@ namespace rupture
 
 
     template <int dim>
+    bool
+    Discretization<dim>::weighted() const
+    {
+      return fault && fault_cell_weight != 1 &&
+             dealii::Utilities::MPI::n_mpi_processes(mpi_communicator) > 1;
+    }
+
+
+
+    template <int dim>
+    unsigned int
+    Discretization<dim>::cell_weight(
+      const typename Triangulation<dim>::cell_iterator &cell,
+      const typename Triangulation<dim>::CellStatus     status) const
+    {
+      // 1000 for a cell without a fault face (deal.II's own unit). The
+      // children of a refined fault cell are weighed alike, on average:
+      // half of them have a face on the fault.
+      const double unit = 1000;
+      if (!fault->on_fault(cell))
+        return unit;
+      const double extra =
+        (status == Triangulation<dim>::CELL_REFINE ? 0.5 : 1.) *
+        (fault_cell_weight - 1);
+      return static_cast<unsigned int>(std::lround(unit * (1 + extra)));
+    }
+
+
+
+    template <int dim>
+    std::array<std::vector<double>, 2>
+    Discretization<dim>::partition() const
+    {
+      // locally owned cells, and those with a face on the fault
+      std::array<double, 2> mine = {0, 0};
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            mine[0] += 1;
+            mine[1] += (fault && fault->on_fault(cell)) ? 1 : 0;
+          }
+      const auto all =
+        dealii::Utilities::MPI::all_gather(mpi_communicator, mine);
+      std::array<std::vector<double>, 2> result;
+      for (const auto &rank : all)
+        for (unsigned int k = 0; k < 2; ++k)
+          result[k].push_back(rank[k]);
+      return result;
+    }
+
+
+
+    template <int dim>
+    double
+    Discretization<dim>::largest_over_mean(const std::vector<double> &loads)
+    {
+      double sum = 0, most = 0;
+      for (const double x : loads)
+        {
+          sum += x;
+          most = std::max(most, x);
+        }
+      return sum > 0 ? most * loads.size() / sum : 1.;
+    }
+
+
+
+    template <int dim>
     unsigned int
     Discretization<dim>::base_level(
       const typename Triangulation<dim>::cell_iterator &cell) const
@@ -175,6 +243,16 @@ namespace rupture
                         "the scene's <Number of cells> give",
                         available,
                         n_nodes);
+      // Every partition from here on (the scene's own refinements, the
+      // global ones, the region's, each adaptation) weighs the fault's
+      // cells; a loaded checkpoint keeps the partition it was saved with
+      // on as many ranks.
+      if (weighted())
+        mesh.signals.weight.connect(
+          [this](const typename Triangulation<dim>::cell_iterator &cell,
+                 const typename Triangulation<dim>::CellStatus     status) {
+            return cell_weight(cell, status);
+          });
       scene.create_coarse_mesh(mesh);
       // A scene may refine its coarse blocks itself (a box's tree levels):
       // the levels a mesh that follows the rupture never coarsens.
@@ -267,6 +345,11 @@ namespace rupture
           if (fault)
             refine_fault_alike();
         }
+
+      // The refinements above weighed the children of a fault cell alike
+      // (see refine()): once more with each cell's own weight.
+      if (weighted() && !saved)
+        mesh.repartition();
 
       std::vector<double> cells_per_material(materials.n_materials(), 0.);
       for (const auto &cell : mesh.active_cell_iterators())

@@ -51,8 +51,12 @@ namespace rupture
       //   refined or coarsened a cell on one side of the fault only, and
       //   the fault's node pairs need both sides alike: the cells that lack
       //   a level are refined;
-      // - @p reflag flags the next level of this adaptation.
-      const auto go_on = [&]() {
+      // - @p reflag flags the next level of this adaptation;
+      // - with <Fault cell weight>, the final mesh is partitioned once more
+      //   with every cell's own weight (p4est weighs the children of a cell
+      //   it refines alike, so the partition it made with the refinement
+      //   balances the fault's cells only in part).
+      const auto go_on = [&](const bool repartition) {
         distribute_dofs();
         std::vector<Distributed *> here;
         for (auto &v : values)
@@ -74,7 +78,10 @@ namespace rupture
           }
         transfer = std::make_unique<Transfer>(dofs);
         transfer->prepare_for_coarsening_and_refinement(in);
-        mesh.execute_coarsening_and_refinement();
+        if (repartition)
+          mesh.repartition();
+        else
+          mesh.execute_coarsening_and_refinement();
       };
       unsigned int alike_rounds = 0;
       while (true)
@@ -85,8 +92,10 @@ namespace rupture
             alike_rounds = 0;
           else
             break;
-          go_on();
+          go_on(false);
         }
+      if (weighted())
+        go_on(true);
       timer.leave_subsection();
 
       setup();

@@ -45,6 +45,20 @@ namespace rupture
 
 
     template <int dim>
+    bool
+    Fault<dim>::on_fault(
+      const typename Triangulation<dim>::cell_iterator &cell) const
+    {
+      for (const auto f : cell->face_indices())
+        if (!cell->at_boundary(f) && side(cell->neighbor(f)) != side(cell) &&
+            region->value(cell->face(f)->center()) != 0)
+          return true;
+      return false;
+    }
+
+
+
+    template <int dim>
     Point<3>
     Fault<dim>::to_3d(const Point<dim> &p) const
     {

@@ -35,6 +35,25 @@ namespace rupture
                                                double(n_dofs) * state.step) :
                 0.)
           << " ns per DoF-step per core\n";
+    if (n_ranks > 1)
+      {
+        // Largest rank over the mean: of the cells, of those on the fault,
+        // and of the weights the partition balanced.
+        const auto          counts = discretization.partition();
+        const double        w      = discretization.fault_weight();
+        std::vector<double> weighted(n_ranks);
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          weighted[r] = counts[0][r] + (w - 1) * counts[1][r];
+        using D = Discretization::Discretization<dim>;
+        pcout << "   Partition of the last mesh, largest rank over the mean: "
+              << std::setprecision(3) << "cells "
+              << D::largest_over_mean(counts[0]);
+        if (fault)
+          pcout << ", cells on the fault " << D::largest_over_mean(counts[1])
+                << ", weighted (<Discretization/Fault cell weight> = " << w
+                << ") " << D::largest_over_mean(weighted);
+        pcout << "\n" << std::setprecision(4);
+      }
     if (mesh_refinement.enabled())
       pcout << "   Mesh refinement: " << fault_refinement->n_adaptations()
             << " adaptations in " << fault_refinement->seconds()
@@ -171,6 +190,21 @@ namespace rupture
         << "  \"ranks\": " << n_ranks << ",\n"
         << "  \"dofs\": " << discretization.dof_handler().n_dofs() << ",\n"
         << "  \"steps\": " << state.step << ",\n";
+    if (collective && n_ranks > 1)
+      {
+        // The last mesh's cells and fault cells on each rank.
+        const auto counts = discretization.partition();
+        const auto list   = [](const std::vector<double> &x) {
+          std::ostringstream s;
+          for (unsigned int r = 0; r < x.size(); ++r)
+            s << (r > 0 ? ", " : "") << x[r];
+          return "[" + s.str() + "]";
+        };
+        out << "  \"partition\": {\"fault cell weight\": "
+            << json_number(discretization.fault_weight())
+            << ", \"cells per rank\": " << list(counts[0])
+            << ", \"fault cells per rank\": " << list(counts[1]) << "},\n";
+      }
     if (mesh_refinement.enabled())
       out << "  \"mesh adaptations\": " << fault_refinement->n_adaptations()
           << ",\n"

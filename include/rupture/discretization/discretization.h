@@ -124,6 +124,25 @@ namespace rupture
              const std::function<bool()> &reflag,
              const std::function<void()> &setup,
              TimerOutput                 &timer);
+      /**
+       * The mesh's partition: for each rank, its number of locally owned
+       * cells and of those with a face on the fault. Collective.
+       */
+      std::array<std::vector<double>, 2>
+      partition() const;
+      /// The largest of @p loads (one per rank) over their mean.
+      static double
+      largest_over_mean(const std::vector<double> &loads);
+      /// <Fault cell weight>.
+      double
+      fault_weight() const
+      {
+        return fault_cell_weight;
+      }
+      /// Whether the partition weighs the fault's cells (a fault, a weight
+      /// other than 1, more than one rank).
+      bool
+      weighted() const;
       /// The level a cell had before any adaptation: the scene's own
       /// levels, the global refinements and the refinement region's.
       unsigned int
@@ -265,6 +284,11 @@ namespace rupture
                               const double      dt) const override;
 
     private:
+      /// The weight of @p cell in the partition (<Fault cell weight>);
+      /// @p status says whether p4est is about to refine or coarsen it.
+      unsigned int
+      cell_weight(const typename Triangulation<dim>::cell_iterator &cell,
+                  const typename Triangulation<dim>::CellStatus status) const;
       /// Refuse a mesh of @p n_coarse coarse cells (as @p source says)
       /// whose refined size cannot fit in the memory @p available (bytes)
       /// of the run's @p n_nodes nodes (0: unknown, no check).
@@ -296,6 +320,8 @@ namespace rupture
       /// <Refinement region> and its number of levels.
       std::unique_ptr<FunctionParser<dim>> region;
       unsigned int                         region_refinements = 0;
+      /// <Fault cell weight>: a fault cell's share of the partition.
+      double fault_cell_weight = 1;
       /// The level of the scene's cells as it builds them (a box of blocks
       /// refines its blocks itself): the base of base_level().
       unsigned int                              scene_levels = 0;

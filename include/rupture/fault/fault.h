@@ -125,6 +125,14 @@ namespace rupture
       side(const typename Triangulation<dim>::cell_iterator &cell) const;
 
       /**
+       * Whether @p cell (active or a parent) has a face on the fault: a
+       * face whose neighbour lies on the other side, with the fault region
+       * nonzero at its centre. For the weights of the mesh's partition.
+       */
+      bool
+      on_fault(const typename Triangulation<dim>::cell_iterator &cell) const;
+
+      /**
        * After the DoFs are distributed: find the split node pairs and the
        * welded ones, add the welding constraints u+ = u- to
        * @p constraints (not yet closed), and compute the nodes' areas and
