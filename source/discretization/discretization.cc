@@ -77,9 +77,10 @@ namespace rupture
         "and after every adaptation): the ranks then get equal sums of "
         "these weights instead of equal numbers of cells. Such a cell "
         "carries the fault's node pairs (their friction) and, with "
-        "<Damping/Fault zone damping>, a second stiffness product; "
-        "doc/performance.md lists measured values. 1 balances the numbers "
-        "of cells; a single rank ignores it.");
+        "<Damping/Fault zone damping>, a share of a second stiffness "
+        "product; contrib/partition-study measures it (doc/partition.md: "
+        "about 4 for TPV3's Q2 cells with fault zone damping). 1 balances "
+        "the numbers of cells; a single rank ignores it.");
       prm.declare_entry("Polynomial degree",
                         "1",
                         Patterns::Integer(1, 4),

@@ -53,9 +53,11 @@ namespace rupture
       //   a level are refined;
       // - @p reflag flags the next level of this adaptation;
       // - with <Fault cell weight>, the final mesh is partitioned once more
-      //   with every cell's own weight (p4est weighs the children of a cell
-      //   it refines alike, so the partition it made with the refinement
-      //   balances the fault's cells only in part).
+      //   with every cell's own weight if its partition leaves the largest
+      //   rank's weight more than 5 % above the mean (p4est weighs the
+      //   children of a cell it refines alike, so the partition it made
+      //   with the refinement balances the fault's cells only in part; a
+      //   round costs as much as a level of refinement).
       const auto go_on = [&](const bool repartition) {
         distribute_dofs();
         std::vector<Distributed *> here;
@@ -95,7 +97,14 @@ namespace rupture
           go_on(false);
         }
       if (weighted())
-        go_on(true);
+        {
+          const auto          counts = partition();
+          std::vector<double> load(counts[0].size());
+          for (unsigned int r = 0; r < load.size(); ++r)
+            load[r] = counts[0][r] + (fault_cell_weight - 1) * counts[1][r];
+          if (largest_over_mean(load) > 1.05)
+            go_on(true);
+        }
       timer.leave_subsection();
 
       setup();

@@ -189,8 +189,10 @@ namespace rupture
         << "  \"dimension\": " << dim << ",\n"
         << "  \"ranks\": " << n_ranks << ",\n"
         << "  \"dofs\": " << discretization.dof_handler().n_dofs() << ",\n"
-        << "  \"steps\": " << state.step << ",\n";
-    if (collective && n_ranks > 1)
+        << "  \"steps\": " << state.step << ",\n"
+        << "  \"time loop wall time\": "
+        << json_number(test_mode ? 0. : cost.time_loop_seconds) << ",\n";
+    if (collective)
       {
         // The last mesh's cells and fault cells on each rank.
         const auto counts = discretization.partition();
