@@ -1,3 +1,4 @@
+#include <rupture/adaptivity/consistent_flags.h>
 #include <rupture/adaptivity/fault_refinement.h>
 #include <rupture/adaptivity/front_criterion.h>
 #include <rupture/adaptivity/gather.h>
@@ -350,7 +351,9 @@ namespace rupture
           }
       // The wavefield's indicators belong to this mesh.
       wave.reset();
-      // Coarsening flags of incomplete families go.
+      // Coarsening flags of incomplete families go; the level balance is
+      // decided alike on every partition.
+      make_flags_consistent(triangulation);
       triangulation.prepare_coarsening_and_refinement();
       held = false;
       if (parameters.max_dofs > 0 &&
@@ -360,6 +363,7 @@ namespace rupture
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned())
               cell->clear_refine_flag();
+          make_flags_consistent(triangulation);
           triangulation.prepare_coarsening_and_refinement();
           held = true;
         }

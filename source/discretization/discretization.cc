@@ -24,8 +24,7 @@ namespace rupture
       : mpi_communicator(communicator)
       , mesh(communicator,
              typename Triangulation<dim>::MeshSmoothing(
-               Triangulation<dim>::smoothing_on_refinement |
-               Triangulation<dim>::smoothing_on_coarsening))
+               Triangulation<dim>::limit_level_difference_at_vertices))
     {}
 
 
