@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace rupture
@@ -40,9 +41,10 @@ namespace rupture
       using namespace dealii;
       using Iterator = typename Triangulation<dim>::active_cell_iterator;
       const MPI_Comm communicator = triangulation.get_communicator();
-      // Every active cell that shares a vertex with a cell (also a hanging
-      // one), this process's view: owned and ghost cells.
-      const auto vertex_cells = GridTools::vertex_to_cell_map(triangulation);
+      // The finest level at each vertex after the adaptation. (On a mesh
+      // whose neighbours differ by at most one level, every cell that
+      // touches a cell has one of its vertices, hanging ones apart.)
+      std::vector<int> at_vertex(triangulation.n_vertices());
       // The level each cell will have after the adaptation; -1 where this
       // process does not know (artificial cells).
       std::vector<int> future(triangulation.n_active_cells(), -1);
@@ -78,22 +80,23 @@ namespace rupture
             [&](const Iterator &cell, const int &level) {
               future[cell->active_cell_index()] = level;
             });
+          std::fill(at_vertex.begin(), at_vertex.end(), -1);
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (!cell->is_artificial())
+              for (const unsigned int v : cell->vertex_indices())
+                at_vertex[cell->vertex_index(v)] =
+                  std::max(at_vertex[cell->vertex_index(v)],
+                           future[cell->active_cell_index()]);
           // From this round's levels alone: the cells to refine and the
-          // families that stay.
+          // families that stay. (The cell's own family counts at the
+          // family's level, which neither decision looks at.)
           std::vector<Iterator> refine, keep;
           for (const auto &cell : triangulation.active_cell_iterators())
             if (cell->is_locally_owned())
               {
-                // The finest level next to the cell, its family apart.
                 int finest = -1;
                 for (const unsigned int v : cell->vertex_indices())
-                  for (const auto &other : vertex_cells[cell->vertex_index(v)])
-                    if (!other->is_artificial() &&
-                        !(cell->level() > 0 &&
-                          other->level() == cell->level() &&
-                          other->parent() == cell->parent()))
-                      finest =
-                        std::max(finest, future[other->active_cell_index()]);
+                  finest = std::max(finest, at_vertex[cell->vertex_index(v)]);
                 const int level = cell->level();
                 if (family_coarsens(cell) && finest > level)
                   keep.push_back(cell);
