@@ -16,8 +16,10 @@
 // - the energy balance closes, with the energy the interpolation added
 //   counted apart and small;
 // - a checkpoint written after an adaptation continues to the same end
-//   (statistics and stations to 1e-12), also on two processes when one
-//   process wrote it.
+//   (statistics and stations to 1e-12), also on two or three processes
+//   when one process wrote it.
+// On one, two and three processes the output is the same but for that
+// count (the meshes are the same on any partition).
 
 #include <deal.II/base/mpi.h>
 
