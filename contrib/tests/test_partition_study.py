@@ -25,12 +25,17 @@ def test_load_balance_counts_fault_cells_by_weight(script):
     assert study.largest_over_mean([1, 3]) == pytest.approx(1.5)
 
 
-def test_step_time_leaves_out_adaptations(script):
+def test_step_time_leaves_out_the_loops_adaptations(script, tmp_path):
     study = script("partition-study")
-    s = {"time loop wall time": 12.0, "adaptation wall time": 2.0,
-         "steps": 100, "partition": {"cells per rank": [3, 4],
-                                     "fault cells per rank": [1, 2]}}
-    assert study.step_time(s) == pytest.approx(0.1)
-    assert study.cells(s) == 7 and study.fault_cells(s) == 3
-    del s["adaptation wall time"]
+    s = {"time loop wall time": 12.0, "steps": 100,
+         "partition": {"cells per rank": [3, 4],
+                       "fault cells per rank": [1, 2]}}
     assert study.step_time(s) == pytest.approx(0.12)
+    assert study.step_time(s, 2.0) == pytest.approx(0.1)
+    assert study.cells(s) == 7 and study.fault_cells(s) == 3
+    # The cumulative column: 0.5 s before the first step, 2.5 s at the end.
+    (tmp_path / "statistics").write_text(
+        "# 1: Time step number\n# 2: Mesh adaptation wall time (s)\n"
+        "0 0.5\n1 0.5\n2 1.5\n3 2.5\n")
+    assert study.loop_adaptations(str(tmp_path)) == pytest.approx(2.0)
+    assert study.loop_adaptations(str(tmp_path / "none")) == 0.

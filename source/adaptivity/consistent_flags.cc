@@ -128,6 +128,11 @@ namespace rupture
           if (Utilities::MPI::max(changed ? 1 : 0, communicator) == 0)
             return;
         }
+      // Each round settles at least one more level: far fewer rounds than
+      // this suffice.
+      AssertThrow(false,
+                  ExcMessage("Internal error: the mesh's level balance did "
+                             "not settle in 100 rounds."));
     }
 
 

@@ -359,9 +359,11 @@ namespace rupture
       if (parameters.max_dofs > 0 &&
           dofs_after_flags(n_dofs) > parameters.max_dofs)
         {
-          // The level is not made; coarsening goes on.
+          // The level is not made; coarsening goes on. (Also the refine
+          // flags that the first pass set on ghost cells go, or the next
+          // would see them.)
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned())
+            if (!cell->is_artificial())
               cell->clear_refine_flag();
           make_flags_consistent(triangulation);
           triangulation.prepare_coarsening_and_refinement();

@@ -151,13 +151,15 @@ namespace rupture
     {
       // 1000 for a cell without a fault face (deal.II's own unit). The
       // children of a refined fault cell are weighed alike, on average:
-      // half of them have a face on the fault.
+      // half of them have a face on the fault. (deal.II 9.4 asks with the
+      // parent for each child: CELL_REFINE for the first, CELL_INVALID for
+      // the others.)
       const double unit = 1000;
       if (!fault->on_fault(cell))
         return unit;
-      const double extra =
-        (status == Triangulation<dim>::CELL_REFINE ? 0.5 : 1.) *
-        (fault_cell_weight - 1);
+      const bool child = status == Triangulation<dim>::CELL_REFINE ||
+                         status == Triangulation<dim>::CELL_INVALID;
+      const double extra = (child ? 0.5 : 1.) * (fault_cell_weight - 1);
       return static_cast<unsigned int>(std::lround(unit * (1 + extra)));
     }
 

@@ -199,7 +199,7 @@ namespace rupture
         const auto list   = [](const std::vector<double> &x) {
           std::ostringstream s;
           for (unsigned int r = 0; r < x.size(); ++r)
-            s << (r > 0 ? ", " : "") << x[r];
+            s << (r > 0 ? ", " : "") << static_cast<unsigned long long>(x[r]);
           return "[" + s.str() + "]";
         };
         out << "  \"partition\": {\"fault cell weight\": "
