@@ -82,8 +82,7 @@ namespace rupture
     FaultRefinement<dim>::at_fault(const CellIterator &cell,
                                    const unsigned int  f) const
     {
-      return fault && !cell->at_boundary(f) &&
-             fault->side(cell->neighbor(f)) != fault->side(cell);
+      return fault && fault->interface_face(cell, f);
     }
 
 

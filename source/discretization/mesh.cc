@@ -204,6 +204,20 @@ namespace rupture
 
 
     template <int dim>
+    double
+    Discretization<dim>::weighted_balance(
+      const std::array<std::vector<double>, 2> &counts,
+      const double                              weight)
+    {
+      std::vector<double> load(counts[0].size());
+      for (unsigned int r = 0; r < load.size(); ++r)
+        load[r] = counts[0][r] + (weight - 1) * counts[1][r];
+      return largest_over_mean(load);
+    }
+
+
+
+    template <int dim>
     unsigned int
     Discretization<dim>::base_level(
       const typename Triangulation<dim>::cell_iterator &cell) const
@@ -326,9 +340,8 @@ namespace rupture
                 // here, where that cell may be another process's).
                 if (fault && !cell->refine_flag_set())
                   for (const auto f : cell->face_indices())
-                    if (!cell->at_boundary(f) &&
+                    if (fault->interface_face(cell, f) &&
                         !cell->neighbor(f)->has_children() &&
-                        fault->side(cell->neighbor(f)) != fault->side(cell) &&
                         region->value(cell->neighbor(f)->center()) > 0)
                       cell->set_refine_flag();
               }

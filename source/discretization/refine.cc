@@ -96,15 +96,8 @@ namespace rupture
             break;
           go_on(false);
         }
-      if (weighted())
-        {
-          const auto          counts = partition();
-          std::vector<double> load(counts[0].size());
-          for (unsigned int r = 0; r < load.size(); ++r)
-            load[r] = counts[0][r] + (fault_cell_weight - 1) * counts[1][r];
-          if (largest_over_mean(load) > 1.05)
-            go_on(true);
-        }
+      if (weighted() && weighted_balance(partition(), fault_cell_weight) > 1.05)
+        go_on(true);
       timer.leave_subsection();
 
       setup();

@@ -46,11 +46,22 @@ namespace rupture
 
     template <int dim>
     bool
+    Fault<dim>::interface_face(
+      const typename Triangulation<dim>::cell_iterator &cell,
+      const unsigned int                                f) const
+    {
+      return !cell->at_boundary(f) && side(cell->neighbor(f)) != side(cell);
+    }
+
+
+
+    template <int dim>
+    bool
     Fault<dim>::on_fault(
       const typename Triangulation<dim>::cell_iterator &cell) const
     {
       for (const auto f : cell->face_indices())
-        if (!cell->at_boundary(f) && side(cell->neighbor(f)) != side(cell) &&
+        if (interface_face(cell, f) &&
             region->value(cell->face(f)->center()) != 0)
           return true;
       return false;

@@ -39,19 +39,16 @@ namespace rupture
       {
         // Largest rank over the mean: of the cells, of those on the fault,
         // and of the weights the partition balanced.
-        const auto          counts = discretization.partition();
-        const double        w      = discretization.fault_weight();
-        std::vector<double> weighted(n_ranks);
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          weighted[r] = counts[0][r] + (w - 1) * counts[1][r];
-        using D = Discretization::Discretization<dim>;
+        const auto   counts = discretization.partition();
+        const double w      = discretization.fault_weight();
+        using D             = Discretization::Discretization<dim>;
         pcout << "   Partition of the last mesh, largest rank over the mean: "
               << std::setprecision(3) << "cells "
               << D::largest_over_mean(counts[0]);
         if (fault)
           pcout << ", cells on the fault " << D::largest_over_mean(counts[1])
                 << ", weighted (<Discretization/Fault cell weight> = " << w
-                << ") " << D::largest_over_mean(weighted);
+                << ") " << D::weighted_balance(counts, w);
         pcout << "\n" << std::setprecision(4);
       }
     if (mesh_refinement.enabled())

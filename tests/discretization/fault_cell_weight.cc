@@ -46,17 +46,13 @@ namespace
   std::vector<double>
   balance(const Discretization<dim> &discretization, const double w)
   {
-    const auto          counts = discretization.partition();
-    std::vector<double> load;
-    double              n_fault = 0;
-    for (unsigned int r = 0; r < counts[0].size(); ++r)
-      {
-        load.push_back(counts[0][r] + (w - 1) * counts[1][r]);
-        n_fault += counts[1][r];
-      }
+    const auto counts  = discretization.partition();
+    double     n_fault = 0;
+    for (const double n : counts[1])
+      n_fault += n;
     return {Discretization<dim>::largest_over_mean(counts[0]),
             Discretization<dim>::largest_over_mean(counts[1]),
-            Discretization<dim>::largest_over_mean(load),
+            Discretization<dim>::weighted_balance(counts, w),
             n_fault};
   }
 

@@ -133,6 +133,11 @@ namespace rupture
       /// The largest of @p loads (one per rank) over their mean.
       static double
       largest_over_mean(const std::vector<double> &loads);
+      /// largest_over_mean() of the ranks' loads in @p counts (of
+      /// partition()), a cell on the fault counting @p weight cells.
+      static double
+      weighted_balance(const std::array<std::vector<double>, 2> &counts,
+                       const double                              weight);
       /// <Fault cell weight>.
       double
       fault_weight() const

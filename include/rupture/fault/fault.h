@@ -125,9 +125,17 @@ namespace rupture
       side(const typename Triangulation<dim>::cell_iterator &cell) const;
 
       /**
-       * Whether @p cell (active or a parent) has a face on the fault: a
-       * face whose neighbour lies on the other side, with the fault region
-       * nonzero at its centre. For the weights of the mesh's partition.
+       * Whether face @p f of @p cell (active or a parent) lies between the
+       * two sides: its neighbour is on the other side (welded or not).
+       */
+      bool
+      interface_face(const typename Triangulation<dim>::cell_iterator &cell,
+                     const unsigned int                                f) const;
+
+      /**
+       * Whether @p cell (active or a parent) has a face on the fault: an
+       * interface face with the fault region nonzero at its centre. For the
+       * weights of the mesh's partition.
        */
       bool
       on_fault(const typename Triangulation<dim>::cell_iterator &cell) const;
