@@ -141,6 +141,26 @@ namespace rupture
 
 
 
+    std::vector<std::string>
+    split_top_level(const std::string &text)
+    {
+      std::vector<std::string> items(1);
+      int                      depth = 0;
+      for (const char c : text)
+        {
+          depth += (c == '(') - (c == ')');
+          if (c == ',' && depth == 0)
+            items.emplace_back();
+          else
+            items.back() += c;
+        }
+      for (std::string &item : items)
+        item = dealii::Utilities::trim(item);
+      return items;
+    }
+
+
+
     std::vector<double>
     parse_doubles(const std::string &text, const std::string &entry_name)
     {

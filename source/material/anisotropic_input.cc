@@ -1,5 +1,6 @@
 #include <rupture/base/utilities.h>
 #include <rupture/material/anisotropic_input.h>
+#include <rupture/material/spatial_factors.h>
 
 #include <algorithm>
 #include <cmath>
@@ -65,23 +66,26 @@ namespace rupture
 
 
 
-      /// The named constants of one material's <Stiffness> field.
-      std::map<std::string, double>
-      parse_constants(const std::string &field,
-                      const Symmetry     symmetry,
-                      const std::string &which)
+      /// The named constants' texts of one material's <Stiffness> field.
+      std::map<std::string, std::string>
+      parse_texts(const std::string &field,
+                  const Symmetry     symmetry,
+                  const std::string &which)
       {
         const std::string entry = "<Material/Stiffness>" + which;
         const std::string name  = symmetry_names()[static_cast<int>(symmetry)];
-        const std::vector<std::string> needed = constant_names(symmetry);
-        std::map<std::string, double>  constants;
-        for (const std::string &item : Utilities::split_list(field))
+        const std::vector<std::string>     needed = constant_names(symmetry);
+        std::map<std::string, std::string> constants;
+        for (const std::string &item : Utilities::split_top_level(field))
           {
+            if (item.empty())
+              continue;
             const std::size_t equal = item.find('=');
             AssertThrow(equal != std::string::npos,
                         ExcMessage(entry + " has the item '" + item +
                                    "', but each item must read 'Cij = "
-                                   "value' (Pa). A " +
+                                   "value' (Pa; a number or a function of "
+                                   "x, y, z). A " +
                                    name + " material takes " +
                                    allowed_list(symmetry) + "."));
             std::string key = dealii::Utilities::trim(item.substr(0, equal));
@@ -97,15 +101,11 @@ namespace rupture
                         ExcMessage(entry + " gives " + key + " twice."));
             const std::string text =
               dealii::Utilities::trim(item.substr(equal + 1));
-            char        *end   = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            AssertThrow(!text.empty() && end == text.c_str() + text.size() &&
-                          std::isfinite(value) && std::abs(value) < 1e20,
-                        ExcMessage(entry + ": " + key +
-                                   " must be one finite number of at most "
-                                   "1e20 in magnitude (Pa), but it is '" +
-                                   text + "'."));
-            constants[key] = value;
+            AssertThrow(!text.empty(),
+                        ExcMessage(entry + " gives " + key +
+                                   " no value. Allowed: a number (Pa) or a "
+                                   "function of x, y, z."));
+            constants[key] = text;
           }
         std::vector<std::string> missing;
         for (const std::string &key : needed)
@@ -268,15 +268,44 @@ namespace rupture
 
 
 
-    VoigtMatrix
-    anisotropic_stiffness(const AnisotropicEntries &entries,
-                          const unsigned int        index,
-                          const std::string        &which)
+    std::map<std::string, std::string>
+    stiffness_texts(const AnisotropicEntries &entries,
+                    const unsigned int        index,
+                    const std::string        &which)
     {
-      const Symmetry    symmetry = entries.symmetry[index];
-      const VoigtMatrix own      = voigt_matrix(
-        symmetry, parse_constants(entries.stiffness[index], symmetry, which));
-      const std::array<double, 6> e = kelvin_eigenvalues(own);
+      return parse_texts(entries.stiffness[index],
+                         entries.symmetry[index],
+                         which);
+    }
+
+
+
+    Tensor<2, 3>
+    material_axes(const AnisotropicEntries &entries,
+                  const unsigned int        index,
+                  const std::string        &which)
+    {
+      return parse_axes(entries.axes[index], entries.symmetry[index], which);
+    }
+
+
+
+    bool
+    valid_constant(const double value)
+    {
+      return std::isfinite(value) && std::abs(value) < 1e20;
+    }
+
+
+
+    VoigtMatrix
+    checked_stiffness(const Symmetry                       symmetry,
+                      const std::map<std::string, double> &constants,
+                      const Tensor<2, 3>                  &axes,
+                      const std::string                   &which)
+    {
+      const VoigtMatrix           own = voigt_matrix(symmetry, constants);
+      const std::array<double, 6> e   = kelvin_eigenvalues(own);
       AssertThrow(e[0] > 1e-8 * e[5],
                   ExcMessage(
                     "The stiffness given by <Material/Stiffness>" + which +
@@ -290,7 +319,35 @@ namespace rupture
                     "energy and wave speeds stay finite. (Transversely "
                     "isotropic: C11 > |C11 - 2 C66|, C33 (2 C11 - 2 C66) > "
                     "2 C13^2, C44 > 0, C66 > 0.)"));
-      return rotate(own, parse_axes(entries.axes[index], symmetry, which));
+      return rotate(own, axes);
+    }
+
+
+
+    VoigtMatrix
+    anisotropic_stiffness(const AnisotropicEntries &entries,
+                          const unsigned int        index,
+                          const std::string        &which)
+    {
+      std::map<std::string, double> constants;
+      for (const auto &[key, text] : stiffness_texts(entries, index, which))
+        {
+          double value = 0;
+          AssertThrow(read_number(text, value) && valid_constant(value),
+                      ExcMessage(
+                        "<Material/Stiffness>" + which + ": " + key +
+                        " must be one finite number of at most 1e20 in "
+                        "magnitude (Pa) here, but it is '" +
+                        text +
+                        "'. (Constants that vary in space, functions of x, "
+                        "y, z, are taken by the finite-element method, not by "
+                        "the boundary-integral one.)"));
+          constants[key] = value;
+        }
+      return checked_stiffness(entries.symmetry[index],
+                               constants,
+                               material_axes(entries, index, which),
+                               which);
     }
   } // namespace Material
 } // namespace rupture

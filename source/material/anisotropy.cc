@@ -300,6 +300,135 @@ namespace rupture
 
 
 
+    namespace
+    {
+      /// The Kelvin form's weight of Voigt index @p I (sqrt 2 for shears).
+      double
+      kelvin_weight(const unsigned int I)
+      {
+        return I < 3 ? 1. : std::sqrt(2.);
+      }
+
+
+
+      /// The largest eigenvalue of the symmetric n x n matrix @p a (cyclic
+      /// Jacobi rotations; @p a is overwritten).
+      double
+      largest_symmetric_eigenvalue(VoigtMatrix &a, const unsigned int n)
+      {
+        for (unsigned int sweep = 0; sweep < 60; ++sweep)
+          {
+            double off = 0, diagonal = 0;
+            for (unsigned int p = 0; p < n; ++p)
+              {
+                diagonal += a[p][p] * a[p][p];
+                for (unsigned int q = p + 1; q < n; ++q)
+                  off += a[p][q] * a[p][q];
+              }
+            if (off <= 1e-32 * diagonal)
+              break;
+            for (unsigned int p = 0; p < n; ++p)
+              for (unsigned int q = p + 1; q < n; ++q)
+                {
+                  if (a[p][q] == 0)
+                    continue;
+                  const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+                  const double t =
+                    (theta >= 0 ? 1. : -1.) /
+                    (std::abs(theta) + std::sqrt(theta * theta + 1));
+                  const double cs = 1 / std::sqrt(t * t + 1), sn = t * cs;
+                  for (unsigned int k = 0; k < n; ++k)
+                    {
+                      const double akp = a[k][p], akq = a[k][q];
+                      a[k][p] = cs * akp - sn * akq;
+                      a[k][q] = sn * akp + cs * akq;
+                    }
+                  for (unsigned int k = 0; k < n; ++k)
+                    {
+                      const double apk = a[p][k], aqk = a[q][k];
+                      a[p][k] = cs * apk - sn * aqk;
+                      a[q][k] = sn * apk + cs * aqk;
+                    }
+                }
+          }
+        double largest = a[0][0];
+        for (unsigned int p = 1; p < n; ++p)
+          largest = std::max(largest, a[p][p]);
+        return largest;
+      }
+    } // namespace
+
+
+
+    EnergyRatio::EnergyRatio(const VoigtMatrix &reference,
+                             const unsigned int dim)
+    {
+      if (dim == 2)
+        {
+          n    = 3;
+          rows = {{0, 1, 5, 0, 0, 0}};
+        }
+      // Cholesky factor L of the reference's Kelvin form, then its inverse.
+      VoigtMatrix l{};
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b <= a; ++b)
+          {
+            double sum = reference[rows[a]][rows[b]] * kelvin_weight(rows[a]) *
+                         kelvin_weight(rows[b]);
+            for (unsigned int k = 0; k < b; ++k)
+              sum -= l[a][k] * l[b][k];
+            if (a == b)
+              {
+                Assert(sum > 0,
+                       ExcMessage("The reference tensor is not positive "
+                                  "definite."));
+                l[a][a] = std::sqrt(sum);
+              }
+            else
+              l[a][b] = sum / l[b][b];
+          }
+      for (unsigned int col = 0; col < n; ++col)
+        for (unsigned int a = col; a < n; ++a)
+          {
+            double sum = (a == col ? 1. : 0.);
+            for (unsigned int k = col; k < a; ++k)
+              sum -= l[a][k] * inverse_factor[k][col];
+            inverse_factor[a][col] = sum / l[a][a];
+          }
+    }
+
+
+
+    double
+    EnergyRatio::operator()(const VoigtMatrix &c) const
+    {
+      // M = L^-1 K L^-T, with L^-1 lower triangular.
+      VoigtMatrix k{}, t{}, m{};
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          k[a][b] = c[rows[a]][rows[b]] * kelvin_weight(rows[a]) *
+                    kelvin_weight(rows[b]);
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            double sum = 0;
+            for (unsigned int q = 0; q <= a; ++q)
+              sum += inverse_factor[a][q] * k[q][b];
+            t[a][b] = sum;
+          }
+      for (unsigned int a = 0; a < n; ++a)
+        for (unsigned int b = 0; b <= a; ++b)
+          {
+            double sum = 0;
+            for (unsigned int q = 0; q <= b; ++q)
+              sum += t[a][q] * inverse_factor[b][q];
+            m[a][b] = m[b][a] = sum;
+          }
+      return largest_symmetric_eigenvalue(m, n);
+    }
+
+
+
     SymmetricTensor<2, 3>
     christoffel_matrix(const VoigtMatrix &c, const Tensor<1, 3> &n)
     {

@@ -223,8 +223,11 @@ namespace rupture
           "field for all. Transversely isotropic (symmetry axis along the "
           "material's 3-axis): C11, C33, C13, C44, C66 (C12 = C11 - 2 C66). "
           "Orthotropic: C11, C22, C33, C12, C13, C23, C44, C55, C66. "
-          "General: all 21 Cij with i <= j. The tensor must be positive "
-          "definite.");
+          "General: all 21 Cij with i <= j. Each constant is a number or a "
+          "function of x, y, z (z = 0 in 2-D; commas inside parentheses), "
+          "so that the anisotropy itself may vary in space. The tensor must "
+          "be positive definite (where constants are functions: at every "
+          "point of the material's cells).");
         prm.declare_entry(
           "Material axes",
           "",
@@ -501,6 +504,7 @@ namespace rupture
 
         const AnisotropicEntries anisotropic =
           read_anisotropic_entries(prm, names);
+        tensors.parse(anisotropic, names, dim);
         functions.assign(n, false);
         for (unsigned int i = 0; i < n; ++i)
           functions[i] = (anisotropic.symmetry[i] == Symmetry::isotropic &&
@@ -579,6 +583,17 @@ namespace rupture
           const std::array<double, 3> v = fields.values(id, p);
           set_isotropic(m, v[0], v[1], v[2], by_speeds);
         }
+      else if (tensors.varies(id))
+        {
+          // (The constant factors are folded into the reference and the
+          // density, not into the functions.)
+          m.voigt               = tensors.value(id, p);
+          const double constant = factors.constant_stiffness(id);
+          if (constant != 1)
+            for (auto &row : m.voigt)
+              for (double &x : row)
+                x *= constant;
+        }
       const double s = factors.stiffness(id, p), r = factors.density(id, p);
       if (s != 1 || r != 1 || functions[id])
         scale(m,
@@ -612,6 +627,11 @@ namespace rupture
     ElasticMaterials::reference_ratios(const types::material_id id,
                                        const Point<dim_>       &p) const
     {
+      if (tensors.varies(id))
+        return {tensors.ratio(id, tensors.value(id, p)) *
+                  factors.stiffness(id, p),
+                factors.density(id, p),
+                std::numeric_limits<double>::quiet_NaN()};
       if (!functions[id])
         return {factors.stiffness(id, p),
                 factors.density(id, p),
@@ -632,13 +652,15 @@ namespace rupture
         factors.check(mesh, degree, communicator);
       double fastest = 0;
       for (unsigned int i = 0; i < materials.size(); ++i)
-        if (!functions[i])
+        if (!functions[i] && !tensors.varies(i))
           fastest =
             std::max(fastest,
                      scale[i] *
                        materials[i].template wave_speeds<dim_>().fastest);
+      if (tensors.varies())
+        fastest = std::max(fastest, check_tensors(mesh, degree, communicator));
       if (!has_functions())
-        return fastest;
+        return dealii::Utilities::MPI::max(fastest, communicator);
 
       // Constants given as functions: every value allowed at every point
       // of the material's cells, the factors included, by the rules of
@@ -693,17 +715,73 @@ namespace rupture
 
 
 
+    template <int dim_>
+    double
+    ElasticMaterials::check_tensors(const Triangulation<dim_> &mesh,
+                                    const unsigned int         degree,
+                                    const MPI_Comm communicator) const
+    {
+      // At every point of the material's cells: each constant allowed,
+      // the tensor positive definite (in 2-D the model plane a mirror
+      // plane), and the fastest wave speed bounded by the energy ratio to
+      // the reference: rho(p) v^2 = eps : c(p) : eps for a unit strain
+      // eps = sym(polarisation x direction), at most ratio(p) s(p) times
+      // the reference's.
+      std::string error;
+      double      fastest = 0;
+      VoigtMatrix c;
+      for (const auto &cell : mesh.active_cell_iterators())
+        if (cell->is_locally_owned() && error.empty() &&
+            cell->material_id() < materials.size() &&
+            tensors.varies(cell->material_id()))
+          for (const Point<dim_> &p : check_points<dim_>(cell, degree))
+            {
+              const types::material_id id = cell->material_id();
+              error                       = tensors.checked_value(id, p, c);
+              if (!error.empty())
+                break;
+              const double s = factors.stiffness(id, p),
+                           r = factors.density(id, p);
+              const double v =
+                std::sqrt(tensors.ratio(id, c) * s / r) *
+                materials[id].template wave_speeds<dim_>().fastest;
+              if (v <= speed_of_light)
+                {
+                  fastest = std::max(fastest, v);
+                  continue;
+                }
+              std::ostringstream message;
+              message << "<Material/Stiffness> of material " << id << " ("
+                      << materials[id].name << ") at (" << p
+                      << ") with its <Material/Density> and factors allows "
+                         "wave speeds up to "
+                      << v
+                      << " m/s. Allowed: speeds below the speed of light "
+                         "(SI units: Pa and kg/m^3).";
+              error = message.str();
+              break;
+            }
+      Utilities::throw_if_any(error, communicator);
+      return dealii::Utilities::MPI::max(fastest, communicator);
+    }
+
+
+
     void
     ElasticMaterials::set_anisotropic(ElasticConstants         &m,
                                       const AnisotropicEntries &entries,
                                       const unsigned int        i,
                                       const std::string        &which) const
     {
-      m.symmetry        = entries.symmetry[i];
-      m.lambda          = std::numeric_limits<double>::quiet_NaN();
-      m.mu              = std::numeric_limits<double>::quiet_NaN();
-      m.voigt           = anisotropic_stiffness(entries, i, which);
-      const bool mirror = model_plane_is_mirror_plane(m.voigt);
+      m.symmetry = entries.symmetry[i];
+      m.lambda   = std::numeric_limits<double>::quiet_NaN();
+      m.mu       = std::numeric_limits<double>::quiet_NaN();
+      // (Constants that are functions: the reference tensor, whose class
+      // of mirror planes check_on_mesh() checks at each point.)
+      const bool function = tensors.varies(i);
+      m.voigt             = function ? tensors.reference(i) :
+                                       anisotropic_stiffness(entries, i, which);
+      const bool mirror   = function || model_plane_is_mirror_plane(m.voigt);
       AssertThrow(
         dim == 3 || mirror,
         ExcMessage(
@@ -789,6 +867,19 @@ namespace rupture
       for (unsigned int i = 0; i < materials.size(); ++i)
         {
           const auto &m = materials[i];
+          if (tensors.varies(i))
+            {
+              const SpeedRange &s = (dim == 2 ? m.speeds_2d : m.speeds_3d);
+              out << "   Material " << i << " (" << m.name
+                  << "): rho = " << m.density << " kg/m^3, "
+                  << symmetry_names()[static_cast<int>(m.symmetry)]
+                  << ", constants that vary in space (functions of x, y, "
+                     "z): "
+                  << tensors.text(i) << "; the reference for bounds"
+                  << " has phase speeds " << std::setprecision(6) << s.slowest
+                  << " to " << s.fastest << " m/s\n";
+              continue;
+            }
           if (!m.isotropic())
             {
               // The extreme phase speeds over all directions (in 2-D: in
@@ -857,6 +948,14 @@ namespace rupture
     RUPTURE_INSTANTIATE(2)
     RUPTURE_INSTANTIATE(3)
 #undef RUPTURE_INSTANTIATE
+    template double
+    ElasticMaterials::check_tensors<2>(const Triangulation<2> &,
+                                       const unsigned int,
+                                       const MPI_Comm) const;
+    template double
+    ElasticMaterials::check_tensors<3>(const Triangulation<3> &,
+                                       const unsigned int,
+                                       const MPI_Comm) const;
     template double
     ElasticMaterials::check_on_mesh<2>(const Triangulation<2> &,
                                        const unsigned int,

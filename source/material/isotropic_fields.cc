@@ -10,30 +10,6 @@ namespace rupture
 {
   namespace Material
   {
-    namespace
-    {
-      /// @p text split at the commas outside parentheses, trimmed.
-      std::vector<std::string>
-      split_top_level(const std::string &text)
-      {
-        std::vector<std::string> items(1);
-        int                      depth = 0;
-        for (const char c : text)
-          {
-            depth += (c == '(') - (c == ')');
-            if (c == ',' && depth == 0)
-              items.emplace_back();
-            else
-              items.back() += c;
-          }
-        for (std::string &item : items)
-          item = dealii::Utilities::trim(item);
-        return items;
-      }
-    } // namespace
-
-
-
     void
     IsotropicFields::parse(ParameterHandler               &prm,
                            const std::vector<std::string> &names,
@@ -55,7 +31,8 @@ namespace rupture
               // A comma separated list of numbers (empty items left out,
               // as ever), or one function (whose commas are inside
               // parentheses: if(y < 0, 1, 2)).
-              const std::vector<std::string> items = split_top_level(text);
+              const std::vector<std::string> items =
+                Utilities::split_top_level(text);
               if (items.size() == 1)
                 list = items;
               else
@@ -110,7 +87,7 @@ namespace rupture
                                          "functions of x, y, z."));
                   continue;
                 }
-              AssertThrow(split_top_level(list[i]).size() == 1,
+              AssertThrow(Utilities::split_top_level(list[i]).size() == 1,
                           ExcMessage(which +
                                      ": a field holds one number or one "
                                      "function; fields are separated by "

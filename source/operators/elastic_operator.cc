@@ -80,6 +80,12 @@ namespace rupture
       bool                  varying = false;
       unsigned int          n_q     = 0;
       AlignedVector<Number> q_lambda, q_mu, q_density, q_scale;
+      /// Where anisotropic constants are functions (their tensor's shape
+      /// varies): the whole tensor at each quadrature point (factors
+      /// included), used instead of the batch tensor and q_scale; zero in
+      /// the lanes of materials whose isotropic constants are functions.
+      bool                                           q_tensors = false;
+      AlignedVector<SymmetricTensor<4, dim, Number>> q_stiffness;
       /// With anisotropic materials: whether a batch has lanes whose
       /// isotropic constants are functions.
       std::vector<bool> batch_has_functions;
@@ -162,7 +168,9 @@ namespace rupture
                     for (unsigned int d = 0; d < dim; ++d)
                       sigma[d][d] += k * q_lambda[i] * trace;
                   }
-                if (anisotropic)
+                if (q_tensors)
+                  sigma += k * (q_stiffness[i] * eps);
+                else if (anisotropic)
                   sigma += (k * q_scale[i]) * (stiffness[tensor[cell]] * eps);
                 phi.submit_symmetric_gradient(sigma, q);
               }
@@ -421,7 +429,10 @@ namespace rupture
               impl->q_lambda.resize(n_values, zero);
               impl->q_mu.resize(n_values, zero);
             }
-          if (impl->anisotropic)
+          impl->q_tensors = materials.has_tensor_functions();
+          if (impl->q_tensors)
+            impl->q_stiffness.resize(n_values);
+          else if (impl->anisotropic)
             impl->q_scale.resize(n_values, zero);
           impl->batch_has_functions.assign(n_batches, false);
           for (unsigned int b = 0; b < n_batches; ++b)
@@ -442,7 +453,18 @@ namespace rupture
                     const Material::ElasticConstants m = materials.at(id, p);
                     const unsigned int               i = b * impl->n_q + q;
                     impl->q_density[i][v]              = m.density;
-                    if (impl->anisotropic && !function)
+                    if (impl->q_tensors && !function)
+                      {
+                        const SymmetricTensor<4, dim> c =
+                          m.template stiffness<dim>();
+                        for (unsigned int a = 0; a < dim; ++a)
+                          for (unsigned int b = a; b < dim; ++b)
+                            for (unsigned int k = 0; k < dim; ++k)
+                              for (unsigned int l = k; l < dim; ++l)
+                                impl->q_stiffness[i][a][b][k][l][v] =
+                                  c[a][b][k][l];
+                      }
+                    else if (impl->anisotropic && !function)
                       impl->q_scale[i][v] =
                         materials.reference_ratios(id, p)[0];
                     else
@@ -614,7 +636,8 @@ namespace rupture
              impl->q_lambda.memory_consumption() +
              impl->q_mu.memory_consumption() +
              impl->q_density.memory_consumption() +
-             impl->q_scale.memory_consumption();
+             impl->q_scale.memory_consumption() +
+             impl->q_stiffness.memory_consumption();
     }
 
 

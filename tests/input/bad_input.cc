@@ -153,6 +153,27 @@ main(int argc, char **argv)
                "isotropic\n  set Stiffness = C11 = 6e10, C33 = 4e10, C13 = "
                "1.5e10, C44 = 1.2e10, C66 = 2e10\n  set Material axes = 1, 0, "
                "1\nend\n");
+  // Anisotropic constants as functions: a tensor that stops being
+  // positive definite at x = 500 (C66 < 0), a constant that is NaN on
+  // part of the cells, one that is no function, and in 2-D a C16 that
+  // couples in-plane and out-of-plane motion away from the origin.
+  const std::string orthotropic =
+    "subsection Material\n  set Symmetry = general\n  set Stiffness = "
+    "C11 = 9e10, C22 = 9e10, C33 = 9e10, C12 = 3e10, C13 = 3e10, C23 = "
+    "3e10, C44 = 3e10, C55 = 3e10, C14 = 0, C15 = 0, C16 = 0, C24 = 0, "
+    "C25 = 0, C26 = 0, C34 = 0, C35 = 0, C36 = 0, C45 = 0, C46 = 0, "
+    "C56 = 0, ";
+  write("tensor_not_positive.prm",
+        base + orthotropic + "C66 = 3e10 - 6e7*x\nend\n");
+  write("tensor_nan.prm",
+        base + orthotropic + "C66 = 3e10*sqrt(250 - y)/10\nend\n");
+  write("tensor_not_function.prm", base + orthotropic + "C66 = 3e10*w\nend\n");
+  write("tensor_mirror_2d.prm",
+        base + "subsection Material\n  set Symmetry = general\n  set "
+               "Stiffness = C11 = 9e10, C22 = 9e10, C33 = 9e10, C12 = 3e10, "
+               "C13 = 3e10, C23 = 3e10, C44 = 3e10, C55 = 3e10, C66 = 3e10, "
+               "C14 = 1e7*x, C15 = 0, C16 = 0, C24 = 0, C25 = 0, C26 = 0, "
+               "C34 = 0, C35 = 0, C36 = 0, C45 = 0, C46 = 0, C56 = 0\nend\n");
   write("function.prm",
         base + "subsection Initial conditions\n  set Displacement = "
                "sin(q*x); 0\nend\n");
@@ -275,6 +296,16 @@ main(int argc, char **argv)
         {"anisotropic_density_function.prm"});
   check("density field with an unknown variable", {"density_field.prm"});
   check("a function in a list separated by commas", {"comma_function.prm"});
+  check("anisotropic constants as functions: not positive definite on the "
+        "cells",
+        {"tensor_not_positive.prm"});
+  check("anisotropic constants as functions: NaN on the cells",
+        {"tensor_nan.prm"});
+  check("anisotropic constant neither number nor function",
+        {"tensor_not_function.prm"});
+  check("anisotropic constants as functions: 2-D model plane not a mirror "
+        "plane away from the origin",
+        {"tensor_mirror_2d.prm"});
   check("density nan", {"density_nan.prm"});
   check("density function times a density factor above 1e6",
         {"function_with_factor.prm"});

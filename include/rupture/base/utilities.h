@@ -72,6 +72,14 @@ namespace rupture
     split_fields(const std::string &text, const char separator = ';');
 
     /**
+     * Split @p text at the commas outside parentheses into trimmed items,
+     * empty ones kept: a list whose items may be functions with commas of
+     * their own ("C11 = if(z < 0, 1e10, 2e10), C33 = 4e10").
+     */
+    std::vector<std::string>
+    split_top_level(const std::string &text);
+
+    /**
      * Parse a list of doubles. The message names @p entry_name on error.
      */
     std::vector<double>

@@ -121,6 +121,33 @@ namespace rupture
     stiffness_tensor(const VoigtMatrix &c);
 
     /**
+     * The largest ratio, over all strains (in 2-D: in-plane strains), of
+     * the energy density of a tensor to that of a fixed positive definite
+     * reference: the largest eigenvalue of K_ref^-1/2 K K_ref^-1/2 of their
+     * Kelvin forms. So eps : c : eps <= ratio(c) eps : reference : eps for
+     * every strain, with equality for one: element matrices, and squared
+     * wave speeds, of c are at most ratio(c) times those of the reference.
+     */
+    class EnergyRatio
+    {
+    public:
+      EnergyRatio() = default;
+
+      /// For @p reference (positive definite) in @p dim dimensions.
+      EnergyRatio(const VoigtMatrix &reference, const unsigned int dim);
+
+      double
+      operator()(const VoigtMatrix &c) const;
+
+    private:
+      /// The number of strain components and their Voigt indices.
+      unsigned int                n    = 6;
+      std::array<unsigned int, 6> rows = {{0, 1, 2, 3, 4, 5}};
+      /// The inverse of the reference's Kelvin form's Cholesky factor.
+      VoigtMatrix inverse_factor{};
+    };
+
+    /**
      * The extreme phase speeds over all directions of propagation, in
      * @p dim dimensions (in 2-D: directions and polarisations in the
      * model plane). Sampled over directions (every 2 degrees in 2-D,

@@ -4,6 +4,7 @@
 #include <rupture/material/anisotropy.h>
 #include <rupture/material/isotropic_fields.h>
 #include <rupture/material/spatial_factors.h>
+#include <rupture/material/tensor_fields.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
@@ -127,14 +128,23 @@ namespace rupture
       /**
        * Whether a material's constants vary in space: an isotropic
        * material's <Density>, wave speeds or moduli given as functions of
-       * position, or <Material/Stiffness factor> or <Material/Density
-       * factor> a function. Then at() gives a material's constants at a
-       * point, and get() is not to be used for them.
+       * position, an anisotropic material's <Stiffness> constants, or
+       * <Material/Stiffness factor> or <Material/Density factor> a function.
+       * Then at() gives a material's constants at a point, and get() is not to
+       * be used for them.
        */
       bool
       varies_in_space() const
       {
-        return factors.varies() || has_functions();
+        return factors.varies() || has_functions() || tensors.varies();
+      }
+
+      /// Whether some anisotropic material's constants (<Material/
+      /// Stiffness>) are functions of position: its tensor's shape varies.
+      bool
+      has_tensor_functions() const
+      {
+        return tensors.varies();
       }
 
       /**
@@ -159,6 +169,10 @@ namespace rupture
        * energy density lambda tr(eps)^2 + 2 mu eps : eps is at most
        * max(s) times that of reference(id, max(lambda) / max(s)) for every
        * strain, and the density at least min(r) times reference()'s.
+       * Where an anisotropic material's constants are functions, s is the
+       * energy ratio (EnergyRatio) of its tensor at p to its reference
+       * tensor (TensorFields::reference()) times the stiffness factor, r
+       * the density factor.
        */
       template <int dim>
       std::array<double, 3>
@@ -166,7 +180,9 @@ namespace rupture
 
       /**
        * The constants that reference_ratios() refers to: get(id) where only
-       * factors vary; where isotropic constants are functions, lambda =
+       * factors vary or an anisotropic material's constants are functions
+       * (get() then holds the reference tensor); where isotropic constants are
+       * functions, lambda =
        * @p kappa, mu = 1, density 1 (the energy density grows with
        * lambda, so any larger @p kappa bounds it as well).
        */
@@ -229,6 +245,19 @@ namespace rupture
       summary() const;
 
     private:
+      /**
+       * check_on_mesh() for the anisotropic materials whose constants are
+       * functions: at check_points() of their locally owned cells each
+       * constant allowed, the tensor positive definite and, in 2-D, the
+       * model plane a mirror plane; returns a bound of their fastest wave
+       * speed.
+       */
+      template <int dim>
+      double
+      check_tensors(const Triangulation<dim> &mesh,
+                    const unsigned int        degree,
+                    const MPI_Comm            communicator) const;
+
       /// The constants of anisotropic material @p i (see parse_parameters).
       void
       set_anisotropic(ElasticConstants         &m,
@@ -240,6 +269,7 @@ namespace rupture
       unsigned int                  dim = 3;
       SpatialFactors                factors;
       IsotropicFields               fields;
+      TensorFields                  tensors;
       bool                          by_speeds = true;
       /// Whether material i is isotropic with constants given as functions
       /// (anisotropic materials ignore the isotropic entries).
