@@ -2,6 +2,7 @@
 // stored matrix: levels, transfers, smoothers and the V-cycle.
 
 #include <rupture/base/sparse_gather.h>
+#include <rupture/base/utilities.h>
 #include <rupture/operators/elastic_operator.h>
 #include <rupture/operators/mesh_transfer.h>
 #include <rupture/operators/multigrid.h>
@@ -113,8 +114,8 @@ namespace rupture
         AffineConstraints<double>                 constraints;
         std::unique_ptr<ElasticOperator<dim>>     own_operator;
         const ElasticOperator<dim>               *op = nullptr;
-        std::shared_ptr<const Utilities::MPI::Partitioner> relevant;
-        PairBlocks<dim>                                    pair_blocks;
+        std::shared_ptr<const dealii::Utilities::MPI::Partitioner> relevant;
+        PairBlocks<dim>                                            pair_blocks;
         VectorType                  free, diagonal_k, diagonal_m, diagonal;
         std::array<VectorType, dim> tangent;
         double                      lambda_max = 2;
@@ -180,9 +181,9 @@ namespace rupture
       DoFTools::extract_locally_relevant_dofs(dh, relevant_dofs);
       const IndexSet &owned = dh.locally_owned_dofs();
       level.relevant =
-        std::make_shared<Utilities::MPI::Partitioner>(owned,
-                                                      relevant_dofs,
-                                                      communicator);
+        std::make_shared<dealii::Utilities::MPI::Partitioner>(owned,
+                                                              relevant_dofs,
+                                                              communicator);
 
       // Hanging nodes and the fault's welding, as on the fine mesh; the
       // pairs of the fine mesh are those of the simulator's fault (its
@@ -480,6 +481,33 @@ namespace rupture
                 cell->set_material_id(fine_cell->material_id());
               }
         }
+      // Constants that vary in space are evaluated on the coarser meshes'
+      // cells too, over the region of all their children: allowed there?
+      if (description.materials->varies_in_space())
+        for (unsigned int l = 0; l + 1 < n_meshes; ++l)
+          try
+            {
+              description.materials->check_on_mesh(*triangulations[l],
+                                                   degrees.front(),
+                                                   communicator);
+            }
+          catch (const ExceptionBase &error)
+            {
+              AssertThrow(false,
+                          ExcMessage(
+                            "The geometric multigrid's coarser mesh " +
+                            std::to_string(l) + " (of " +
+                            std::to_string(n_meshes - 1) +
+                            "; its cells span their children's region, "
+                            "its quadrature points lie between the run's "
+                            "own) evaluates the constants where they are not "
+                            "allowed: " +
+                            Utilities::message_of(error) +
+                            " Allowed: functions of position that are "
+                            "valid over each material's whole region, or "
+                            "<Solver/Preconditioner> = AMG or "
+                            "block Jacobi (the run's own mesh only)."));
+            }
       // The meshes at the lowest degree, then the simulator's mesh at each
       // higher degree.
       for (unsigned int l = 0; l < n_levels; ++l)

@@ -114,6 +114,36 @@ namespace rupture
 
   template <int dim>
   void
+  Simulator<dim>::repartition_continued_run()
+  {
+    TimerOutput::Scope t(timer, "Repartition continued run");
+    using D             = Discretization::Discretization<dim>;
+    const double weight = discretization.fault_weight();
+    const double before =
+      D::weighted_balance(discretization.partition(), weight);
+    // No cell flagged: p4est partitions the same mesh with the weights
+    // (each cell its own), which on the ranks the checkpoint was written
+    // on is the partition of the uninterrupted run.
+    execute_refinement();
+    // As refine_continued_run(): the operators, the first phase's
+    // integrator (run_continued() sets up a later one) and the forces of
+    // the last step, for the state as it is.
+    assemble_physics_matrices();
+    if (fault)
+      fault->set_time(state.time);
+    refresh_step_forces();
+    pcout << "   Partitioned again with <Discretization/Fault cell weight> = "
+          << weight << ": the largest rank's weight " << std::setprecision(3)
+          << before << " -> "
+          << D::weighted_balance(discretization.partition(), weight)
+          << " of the mean\n"
+          << std::setprecision(4);
+  }
+
+
+
+  template <int dim>
+  void
   Simulator<dim>::refresh_step_forces()
   {
     // As initialize_state() computes them, for the state as it is.

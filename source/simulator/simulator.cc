@@ -273,6 +273,8 @@ namespace rupture
     read_checkpoint();
     if (checkpoints.refinements > 0)
       refine_continued_run();
+    else if (discretization.weighted())
+      repartition_continued_run();
     if (termination.any())
       pcout << termination.description() << "\n";
     pcout << "*** Continuing after step " << state.step

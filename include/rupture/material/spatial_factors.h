@@ -47,7 +47,8 @@ namespace rupture
      * The points at which constants that vary in space are checked on a
      * cell: its Gauss and Gauss-Lobatto points of @p degree + 1 per
      * direction (those of the operators' quadratures; the latter include
-     * the vertices).
+     * the vertices), its centre (the stress output's) and the Gauss points
+     * of its boundary faces (the absorbing boundaries').
      */
     template <int dim>
     std::vector<Point<dim>>

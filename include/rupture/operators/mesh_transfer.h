@@ -46,14 +46,14 @@ namespace rupture
        * DoFs); it must outlive this object.
        */
       void
-      reinit(
-        const DoFHandler<dim> &coarse,
-        const std::shared_ptr<const Utilities::MPI::Partitioner>
-                                        &coarse_relevant,
-        const AffineConstraints<double> &coarse_constraints,
-        const DoFHandler<dim>           &fine,
-        const std::shared_ptr<const Utilities::MPI::Partitioner> &fine_relevant,
-        const std::vector<std::vector<FullMatrix<double>>>       &prolongation);
+      reinit(const DoFHandler<dim> &coarse,
+             const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+                                             &coarse_relevant,
+             const AffineConstraints<double> &coarse_constraints,
+             const DoFHandler<dim>           &fine,
+             const std::shared_ptr<const dealii::Utilities::MPI::Partitioner>
+                                                                &fine_relevant,
+             const std::vector<std::vector<FullMatrix<double>>> &prolongation);
 
       /// fine = P coarse (owned entries).
       void

@@ -116,6 +116,13 @@ namespace rupture
     /// set everything up again.
     void
     refine_continued_run();
+    /// A continued run whose partition weighs the fault's cells
+    /// (<Discretization/Fault cell weight>, refine.cc): deal.II's load()
+    /// partitions the checkpoint's mesh by cells; partition it again with
+    /// the weights, carry the fields and the fault's state over and set
+    /// everything up again.
+    void
+    repartition_continued_run();
     /// The forces of the last step that the energy sums take up (as
     /// initialize_state() computes them), for the state as it is.
     void

@@ -1,0 +1,115 @@
+// A run whose partition weighs the fault's cells (<Discretization/Fault
+// cell weight>) keeps that partition when it continues from a checkpoint.
+// deal.II's load() partitions a saved mesh by equal numbers of cells; the
+// continued run then partitions it once more with the weights, carrying
+// the motion and the fault's state, before its first step. On two ranks:
+// the 3-D explicit split-node rupture of fault/split_node_3d.prm with
+// weight 4, run through (30 steps) and with checkpoints every 10 steps,
+// the newest removed as if the run had been killed after step 20, then
+// resumed. The resumed run's last mesh has the uninterrupted run's cells
+// and fault cells on each rank (summary.json), its weighted load is as
+// even, and its statistics and station are the uninterrupted run's.
+
+#include <deal.II/base/mpi.h>
+
+#include "../json.h"
+#include "../tests.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace
+{
+  /// The text of list @p key of a summary.json ("[a, b]").
+  std::string
+  json_list(const std::string &text, const std::string &key)
+  {
+    const auto at = text.find("\"" + key + "\": [");
+    if (at == std::string::npos)
+      return "(missing)";
+    const auto begin = at + key.size() + 4;
+    return text.substr(begin, text.find(']', begin) - begin + 1);
+  }
+
+  /// The largest difference of two tables relative to their largest entry.
+  double
+  difference(const std::vector<std::vector<double>> &a,
+             const std::vector<std::vector<double>> &b)
+  {
+    if (a.size() != b.size() || a.empty())
+      return 1e300;
+    double largest = 0, diff = 0;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        if (a[i].size() != b[i].size())
+          return 1e300;
+        for (unsigned int j = 0; j < a[i].size(); ++j)
+          {
+            largest = std::max(largest, std::abs(a[i][j]));
+            diff    = std::max(diff, std::abs(a[i][j] - b[i][j]));
+          }
+      }
+    return diff / std::max(largest, 1e-300);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+  const bool        root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  const std::string prm =
+    std::string(SOURCE_DIR) + "/../fault/split_node_3d.prm";
+  const std::vector<std::string> settings = {
+    "Discretization/Fault cell weight=4",
+    "Time integration/End time=0.6",
+    "Checkpoint/Interval=10"};
+  tests::run_in("full", {prm}, settings);
+  tests::run_in("stopped", {prm}, settings);
+  if (root)
+    std::filesystem::remove_all("stopped/checkpoint/step-000000030");
+  MPI_Barrier(comm);
+  std::vector<std::string> resume = {prm, "--resume"};
+  for (const std::string &s : settings)
+    resume.insert(resume.end(), {"--set", s});
+  resume.insert(resume.end(), {"--set", "Output directory=stopped"});
+  const int code = tests::run(resume);
+  MPI_Barrier(comm);
+  if (!root)
+    return 0;
+  const std::string log = tests::read_file("stopped/log.txt");
+  const auto        at  = log.find("*** Continuing after step");
+  std::printf("resumed: exit code %d, %s\n",
+              code,
+              at == std::string::npos ?
+                "no 'Continuing' line" :
+                log.substr(at, log.find('\n', at) - at).c_str());
+  const auto line = [&](const std::string &start) {
+    const auto p = log.find(start);
+    return p == std::string::npos ? std::string("(missing)") :
+                                    log.substr(p, log.find('\n', p) - p);
+  };
+  std::printf("%s\n", line("   Partitioned again").c_str());
+  const std::string a = tests::read_file("full/summary.json"),
+                    b = tests::read_file("stopped/summary.json");
+  for (const std::string key : {"cells per rank", "fault cells per rank"})
+    std::printf("%s: uninterrupted %s, resumed %s\n",
+                key.c_str(),
+                json_list(a, key).c_str(),
+                json_list(b, key).c_str());
+  for (const std::string file : {"statistics", "center.dat"})
+    {
+      const double d = difference(tests::read_statistics("full/" + file),
+                                  tests::read_statistics("stopped/" + file));
+      std::printf("%s as the uninterrupted run's: %s\n",
+                  file.c_str(),
+                  d == 0    ? "to the last digit" :
+                  d < 1e-10 ? "within 1e-10" :
+                              "no");
+    }
+}
