@@ -643,6 +643,77 @@ namespace rupture
 
 
     template <int dim_>
+    std::vector<std::int64_t>
+    ElasticMaterials::rounded_tensor(const types::material_id id,
+                                     const Point<dim_>       &p) const
+    {
+      const VoigtMatrix c       = tensors.value(id, p);
+      double            largest = 0;
+      for (unsigned int I = 0; I < 6; ++I)
+        largest = std::max(largest, c[I][I]);
+      if (!(largest > 0 && std::isfinite(largest)))
+        return {};
+      const double       bin = std::log(1.01);
+      const std::int64_t exponent =
+        static_cast<std::int64_t>(std::ceil(std::log(largest) / bin));
+      std::vector<std::int64_t> key  = {exponent};
+      const double              unit = 0.01 * std::exp(exponent * bin);
+      for (unsigned int I = 0; I < 6; ++I)
+        for (unsigned int J = I; J < 6; ++J)
+          key.push_back(std::llround(c[I][J] / unit));
+      const std::array<double, 6> e =
+        kelvin_eigenvalues(rounded_tensor_value(key, 0));
+      if (!(e[0] > 1e-3 * e[5]))
+        return {};
+      return key;
+    }
+
+
+
+    VoigtMatrix
+    ElasticMaterials::rounded_tensor_value(const std::vector<std::int64_t> &key,
+                                           const std::size_t first)
+    {
+      const double unit = 0.01 * std::exp(key[first] * std::log(1.01));
+      VoigtMatrix  c{};
+      std::size_t  k = first + 1;
+      for (unsigned int I = 0; I < 6; ++I)
+        for (unsigned int J = I; J < 6; ++J)
+          c[I][J] = c[J][I] = key[k++] * unit;
+      return c;
+    }
+
+
+
+    ElasticConstants
+    ElasticMaterials::local_reference(const types::material_id id,
+                                      const VoigtMatrix       &c) const
+    {
+      ElasticConstants m = materials[id];
+      m.voigt            = c;
+      const double s     = factors.constant_stiffness(id);
+      for (auto &row : m.voigt)
+        for (double &x : row)
+          x *= s;
+      return m;
+    }
+
+
+
+    template <int dim_>
+    std::array<double, 3>
+    ElasticMaterials::local_ratios(const types::material_id id,
+                                   const Point<dim_>       &p,
+                                   const EnergyRatio       &local) const
+    {
+      return {local(tensors.value(id, p)) * factors.stiffness(id, p),
+              factors.density(id, p),
+              std::numeric_limits<double>::quiet_NaN()};
+    }
+
+
+
+    template <int dim_>
     double
     ElasticMaterials::check_on_mesh(const Triangulation<dim_> &mesh,
                                     const unsigned int         degree,
@@ -948,6 +1019,20 @@ namespace rupture
     RUPTURE_INSTANTIATE(2)
     RUPTURE_INSTANTIATE(3)
 #undef RUPTURE_INSTANTIATE
+    template std::vector<std::int64_t>
+    ElasticMaterials::rounded_tensor<2>(const types::material_id,
+                                        const Point<2> &) const;
+    template std::vector<std::int64_t>
+    ElasticMaterials::rounded_tensor<3>(const types::material_id,
+                                        const Point<3> &) const;
+    template std::array<double, 3>
+    ElasticMaterials::local_ratios<2>(const types::material_id,
+                                      const Point<2> &,
+                                      const EnergyRatio &) const;
+    template std::array<double, 3>
+    ElasticMaterials::local_ratios<3>(const types::material_id,
+                                      const Point<3> &,
+                                      const EnergyRatio &) const;
     template double
     ElasticMaterials::check_tensors<2>(const Triangulation<2> &,
                                        const unsigned int,

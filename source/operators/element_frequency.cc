@@ -271,11 +271,21 @@ namespace rupture
       const auto   kappa_of  = [&](const std::int64_t bin) {
         return std::exp(bin * bin_width) - 2;
       };
-      const auto key_of = [&](const auto &cell, const double kappa) {
+      // Where anisotropic constants are functions, the reference is the
+      // cell's own tensor at its centre, rounded (ElasticMaterials::
+      // rounded_tensor(), 22 integers that join the key), or the
+      // material's reference where the rounded tensor is not positive
+      // definite enough: tight where the tensor's shape varies, and the
+      // same on every process.
+      const std::size_t shape_key_size = 2 + dim * (1u << dim);
+      const auto        key_of = [&](const auto                      &cell,
+                              const double                     kappa,
+                              const std::vector<std::int64_t> &tensor) {
         auto key = cell_shape_key(cell, unit);
         if (!std::isnan(kappa))
           key.push_back(static_cast<std::int64_t>(
             std::ceil(std::log(kappa + 2) / bin_width)));
+        key.insert(key.end(), tensor.begin(), tensor.end());
         return key;
       };
 
@@ -298,12 +308,19 @@ namespace rupture
             // run_program()'s agreement on such errors (an abort).
             throw std::logic_error(text.str());
           }
+        const bool local_tensor =
+          materials.tensor_given_as_functions(cell->material_id()) &&
+          key.size() > shape_key_size;
         const Material::ElasticConstants m =
-          materials.reference(cell->material_id(),
-                              materials.given_as_functions(
-                                cell->material_id()) ?
-                                kappa_of(key.back()) :
-                                0.);
+          local_tensor ? materials.local_reference(
+                           cell->material_id(),
+                           Material::ElasticMaterials::rounded_tensor_value(
+                             key, shape_key_size)) :
+                         materials.reference(cell->material_id(),
+                                             materials.given_as_functions(
+                                               cell->material_id()) ?
+                                               kappa_of(key.back()) :
+                                               0.);
         if (const auto h = cell_box_edges(cell))
           return boxes.scaled_matrix(*h, m, a);
         const FEValuesExtractors::Vector u(cell->active_fe_index() * dim);
@@ -340,16 +357,25 @@ namespace rupture
       const MappingQ1<dim>                        mapping;
       // The ratio of a cell and the lambda / mu of its reference (NaN
       // where the constants are not functions).
-      const auto cell_ratio = [&](const auto &cell) {
+      const auto cell_ratio = [&](const auto                      &cell,
+                                  const std::vector<std::int64_t> &tensor) {
         double s_max = 0, r_min = 1e300,
                lambda_max = std::numeric_limits<double>::quiet_NaN();
+        const Material::EnergyRatio local =
+          tensor.empty() ?
+            Material::EnergyRatio() :
+            Material::EnergyRatio(
+              Material::ElasticMaterials::rounded_tensor_value(tensor, 0), dim);
         for (const Quadrature<dim> *q :
              {&q_cells[0], static_cast<const Quadrature<dim> *>(&q_lumped[0])})
           for (const Point<dim> &xi : q->get_points())
             {
-              const auto [s, r, lambda] = materials.reference_ratios(
-                cell->material_id(),
-                mapping.transform_unit_to_real_cell(cell, xi));
+              const Point<dim> p =
+                mapping.transform_unit_to_real_cell(cell, xi);
+              const auto [s, r, lambda] =
+                tensor.empty() ?
+                  materials.reference_ratios(cell->material_id(), p) :
+                  materials.local_ratios(cell->material_id(), p, local);
               s_max = std::max(s_max, s);
               r_min = std::min(r_min, r);
               if (!std::isnan(lambda))
@@ -372,8 +398,12 @@ namespace rupture
                 keys.push_back(cell_shape_key(cell, unit));
                 continue;
               }
-            const auto [ratio, kappa] = cell_ratio(cell);
-            keys.push_back(key_of(cell, kappa));
+            const std::vector<std::int64_t> tensor =
+              materials.tensor_given_as_functions(cell->material_id()) ?
+                materials.rounded_tensor(cell->material_id(), cell->center()) :
+                std::vector<std::int64_t>();
+            const auto [ratio, kappa] = cell_ratio(cell, tensor);
+            keys.push_back(key_of(cell, kappa, tensor));
             double &r = shape_ratio[keys.back()];
             r         = std::max(r, ratio);
           }

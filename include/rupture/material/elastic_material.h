@@ -10,6 +10,7 @@
 #include <deal.II/base/types.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -188,6 +189,48 @@ namespace rupture
        */
       ElasticConstants
       reference(const types::material_id id, const double kappa) const;
+
+      /// Whether material @p id is anisotropic with constants that are
+      /// functions of position.
+      bool
+      tensor_given_as_functions(const types::material_id id) const
+      {
+        return tensors.varies(id);
+      }
+
+      /**
+       * A local reference for the stable step's bound where anisotropic
+       * constants are functions: the tensor of material @p id at @p p
+       * (without factors) rounded, its largest diagonal entry up to a
+       * power of 1.01 and every entry to 1 % of that, as 22 integers that
+       * identify it; none where the rounded tensor is not positive definite
+       * enough (its smallest Kelvin eigenvalue below 1e-3 of its largest):
+       * then the material's reference serves. The same on every process.
+       */
+      template <int dim>
+      std::vector<std::int64_t>
+      rounded_tensor(const types::material_id id, const Point<dim> &p) const;
+
+      /// The tensor of the integers of rounded_tensor() that start at
+      /// @p first in @p key.
+      static VoigtMatrix
+      rounded_tensor_value(const std::vector<std::int64_t> &key,
+                           const std::size_t                first);
+
+      /// The constants of material @p id with the tensor @p c (a value of
+      /// rounded_tensor_value(), times the material's constant stiffness
+      /// factor): the reference that local_ratios() refers to.
+      ElasticConstants
+      local_reference(const types::material_id id, const VoigtMatrix &c) const;
+
+      /// reference_ratios() of an anisotropic material whose constants are
+      /// functions against the tensor whose energy ratio is @p local
+      /// instead of the material's reference.
+      template <int dim>
+      std::array<double, 3>
+      local_ratios(const types::material_id id,
+                   const Point<dim>        &p,
+                   const EnergyRatio       &local) const;
 
       /// Whether isotropic constants are functions of position.
       bool
