@@ -291,6 +291,42 @@ namespace rupture
 
 
     bool
+    positive_definite_enough(const VoigtMatrix &c, const double fraction)
+    {
+      // The largest eigenvalue is at most the trace: K - fraction trace I
+      // positive definite is enough (checked without eigenvalues).
+      VoigtMatrix k{}, l{};
+      double      trace = 0;
+      for (unsigned int I = 0; I < 6; ++I)
+        for (unsigned int J = 0; J < 6; ++J)
+          k[I][J] = c[I][J] * (I < 3 ? 1. : std::sqrt(2.)) *
+                    (J < 3 ? 1. : std::sqrt(2.));
+      for (unsigned int I = 0; I < 6; ++I)
+        trace += k[I][I];
+      bool factorized = std::isfinite(trace) && trace > 0;
+      for (unsigned int I = 0; I < 6 && factorized; ++I)
+        for (unsigned int J = 0; J <= I && factorized; ++J)
+          {
+            double sum = k[I][J] - (I == J ? fraction * trace : 0.);
+            for (unsigned int m = 0; m < J; ++m)
+              sum -= l[I][m] * l[J][m];
+            if (I == J)
+              {
+                factorized = sum > 0;
+                l[I][I]    = factorized ? std::sqrt(sum) : 0.;
+              }
+            else
+              l[I][J] = sum / l[J][J];
+          }
+      if (factorized)
+        return true;
+      const std::array<double, 6> e = kelvin_eigenvalues(c);
+      return e[0] > fraction * e[5];
+    }
+
+
+
+    bool
     valid_constant(const double value)
     {
       return std::isfinite(value) && std::abs(value) < 1e20;
@@ -304,9 +340,11 @@ namespace rupture
                       const Tensor<2, 3>                  &axes,
                       const std::string                   &which)
     {
-      const VoigtMatrix           own = voigt_matrix(symmetry, constants);
-      const std::array<double, 6> e   = kelvin_eigenvalues(own);
-      AssertThrow(e[0] > 1e-8 * e[5],
+      const VoigtMatrix own = voigt_matrix(symmetry, constants);
+      if (positive_definite_enough(own, 1e-8))
+        return rotate(own, axes);
+      const std::array<double, 6> e = kelvin_eigenvalues(own);
+      AssertThrow(false,
                   ExcMessage(
                     "The stiffness given by <Material/Stiffness>" + which +
                     " is not positive definite" +

@@ -2,7 +2,6 @@
 #include <rupture/material/spatial_factors.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/base/qprojector.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
 
@@ -155,19 +154,10 @@ namespace rupture
             static_cast<const Quadrature<dim> *>(&lobatto)})
         for (const Point<dim> &xi : q->get_points())
           points.push_back(mapping.transform_unit_to_real_cell(cell, xi));
-      // The centre (the stress output's constants) and the Gauss points of
-      // boundary faces (the absorbing boundaries' impedance).
+      // The centre: the stress output's constants. (The absorbing
+      // boundaries' impedance takes the faces' Gauss-Lobatto points, among
+      // the cell's.)
       points.push_back(cell->center());
-      const QGauss<dim - 1> face_gauss(degree + 1);
-      for (const unsigned int f : cell->face_indices())
-        if (cell->at_boundary(f))
-          {
-            // (A named quadrature: its points must outlive the loop.)
-            const Quadrature<dim> on_face = QProjector<dim>::project_to_face(
-              ReferenceCells::get_hypercube<dim>(), face_gauss, f);
-            for (const Point<dim> &xi : on_face.get_points())
-              points.push_back(mapping.transform_unit_to_real_cell(cell, xi));
-          }
       return points;
     }
 

@@ -134,7 +134,17 @@ namespace rupture
       const Field       &f = fields[i];
       std::ostringstream where;
       where << f.which << " at (" << p << ")";
-      const std::map<std::string, double> values = constants(f, padded(p));
+      std::map<std::string, double> values;
+      try
+        {
+          values = constants(f, padded(p));
+        }
+      catch (const ExceptionBase &error)
+        {
+          return "<Material/Stiffness>" + where.str() +
+                 ": a function cannot be evaluated there (" +
+                 Utilities::message_of(error) + ").";
+        }
       for (const auto &[key, value] : values)
         if (!valid_constant(value))
           {

@@ -82,10 +82,69 @@ namespace rupture
       AlignedVector<Number> q_lambda, q_mu, q_density, q_scale;
       /// Where anisotropic constants are functions (their tensor's shape
       /// varies): the whole tensor at each quadrature point (factors
-      /// included), used instead of the batch tensor and q_scale; zero in
-      /// the lanes of materials whose isotropic constants are functions.
-      bool                                           q_tensors = false;
-      AlignedVector<SymmetricTensor<4, dim, Number>> q_stiffness;
+      /// included), used instead of the batch tensor and q_scale: its
+      /// Voigt matrix's upper triangle (in 2-D of the in-plane rows 1, 2,
+      /// 6), n_voigt numbers from (batch * n_q + q) * n_voigt; zero in the
+      /// lanes of materials whose isotropic constants are functions.
+      static constexpr unsigned int n_voigt   = (dim == 2 ? 6 : 21);
+      bool                          q_tensors = false;
+      AlignedVector<Number>         q_voigt;
+
+      /// The place of Voigt entry (I, J) in the upper triangle of an n x n
+      /// matrix stored by rows (n = 3 in 2-D, 6 in 3-D; I, J from 0).
+      static constexpr unsigned int
+      packed(const unsigned int I, const unsigned int J)
+      {
+        constexpr unsigned int n = (dim == 2 ? 3 : 6);
+        return I <= J ? I * n - I * (I - 1) / 2 + (J - I) :
+                        J * n - J * (J - 1) / 2 + (I - J);
+      }
+
+      /// The stress of the strain @p eps by the packed Voigt matrix @p c.
+      static SymmetricTensor<2, dim, Number>
+      voigt_stress(const Number *c, const SymmetricTensor<2, dim, Number> &eps)
+      {
+        SymmetricTensor<2, dim, Number> sigma;
+        if constexpr (dim == 2)
+          {
+            // Voigt 1, 2, 6 = xx, yy, xy with engineering shear.
+            const Number g[3] = {eps[0][0], eps[1][1], 2. * eps[0][1]};
+            Number       s[3];
+            for (unsigned int I = 0; I < 3; ++I)
+              {
+                s[I] = c[packed(I, 0)] * g[0];
+                for (unsigned int J = 1; J < 3; ++J)
+                  s[I] += c[packed(I, J)] * g[J];
+              }
+            sigma[0][0] = s[0];
+            sigma[1][1] = s[1];
+            sigma[0][1] = s[2];
+          }
+        else
+          {
+            // Voigt 1-6 = xx, yy, zz, yz, xz, xy.
+            const Number g[6] = {eps[0][0],
+                                 eps[1][1],
+                                 eps[2][2],
+                                 2. * eps[1][2],
+                                 2. * eps[0][2],
+                                 2. * eps[0][1]};
+            Number       s[6];
+            for (unsigned int I = 0; I < 6; ++I)
+              {
+                s[I] = c[packed(I, 0)] * g[0];
+                for (unsigned int J = 1; J < 6; ++J)
+                  s[I] += c[packed(I, J)] * g[J];
+              }
+            sigma[0][0] = s[0];
+            sigma[1][1] = s[1];
+            sigma[2][2] = s[2];
+            sigma[1][2] = s[3];
+            sigma[0][2] = s[4];
+            sigma[0][1] = s[5];
+          }
+        return sigma;
+      }
       /// With anisotropic materials: whether a batch has lanes whose
       /// isotropic constants are functions.
       std::vector<bool> batch_has_functions;
@@ -169,7 +228,7 @@ namespace rupture
                       sigma[d][d] += k * q_lambda[i] * trace;
                   }
                 if (q_tensors)
-                  sigma += k * (q_stiffness[i] * eps);
+                  sigma += k * voigt_stress(&q_voigt[i * n_voigt], eps);
                 else if (anisotropic)
                   sigma += (k * q_scale[i]) * (stiffness[tensor[cell]] * eps);
                 phi.submit_symmetric_gradient(sigma, q);
@@ -431,7 +490,7 @@ namespace rupture
             }
           impl->q_tensors = materials.has_tensor_functions();
           if (impl->q_tensors)
-            impl->q_stiffness.resize(n_values);
+            impl->q_voigt.resize(n_values * Implementation::n_voigt, zero);
           else if (impl->anisotropic)
             impl->q_scale.resize(n_values, zero);
           impl->batch_has_functions.assign(n_batches, false);
@@ -455,14 +514,16 @@ namespace rupture
                     impl->q_density[i][v]              = m.density;
                     if (impl->q_tensors && !function)
                       {
-                        const SymmetricTensor<4, dim> c =
-                          m.template stiffness<dim>();
-                        for (unsigned int a = 0; a < dim; ++a)
-                          for (unsigned int b = a; b < dim; ++b)
-                            for (unsigned int k = 0; k < dim; ++k)
-                              for (unsigned int l = k; l < dim; ++l)
-                                impl->q_stiffness[i][a][b][k][l][v] =
-                                  c[a][b][k][l];
+                        // (In 2-D the in-plane rows 1, 2, 6.)
+                        const unsigned int  rows[6]  = {0, 1, 2, 3, 4, 5};
+                        const unsigned int  plane[3] = {0, 1, 5};
+                        const unsigned int  n        = (dim == 2 ? 3 : 6);
+                        const unsigned int *r = (dim == 2 ? plane : rows);
+                        for (unsigned int a = 0; a < n; ++a)
+                          for (unsigned int b = a; b < n; ++b)
+                            impl->q_voigt[i * Implementation::n_voigt +
+                                          Implementation::packed(a, b)][v] =
+                              m.voigt[r[a]][r[b]];
                       }
                     else if (impl->anisotropic && !function)
                       impl->q_scale[i][v] =
@@ -637,7 +698,7 @@ namespace rupture
              impl->q_mu.memory_consumption() +
              impl->q_density.memory_consumption() +
              impl->q_scale.memory_consumption() +
-             impl->q_stiffness.memory_consumption();
+             impl->q_voigt.memory_consumption();
     }
 
 

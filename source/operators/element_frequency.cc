@@ -253,6 +253,11 @@ namespace rupture
       // later mesh's step is safe, if perhaps smaller than its own cells
       // need.
       auto &seen = omega2;
+      // (A cache: where constants vary, the keys carry the cells' rounded
+      // constants, and an adaptive run would add keys with every mesh.
+      // Emptied when large, it is only computed again.)
+      if (seen.size() > 200000)
+        seen.clear();
       if (unit == 0)
         unit = 1e-7 * GridTools::minimal_cell_diameter(
                         dof_handler.get_triangulation());

@@ -483,31 +483,46 @@ namespace rupture
         }
       // Constants that vary in space are evaluated on the coarser meshes'
       // cells too, over the region of all their children: allowed there?
+      // The run's own mesh is checked at its own degree's points: the
+      // levels of lower degree on it, and the coarser meshes, evaluate them
+      // elsewhere.
+      const auto check = [&](const Triangulation<dim> &mesh,
+                             const unsigned int        degree,
+                             const std::string        &which) {
+        try
+          {
+            description.materials->check_on_mesh(mesh, degree, communicator);
+          }
+        catch (const ExceptionBase &error)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "The geometric multigrid's " + which +
+                          " evaluates the constants where they are not "
+                          "allowed: " +
+                          Utilities::message_of(error) +
+                          " Allowed: functions of position that are valid "
+                          "over each material's whole region, or "
+                          "<Solver/Preconditioner> = AMG or block Jacobi "
+                          "(the run's own mesh and degree only)."));
+          }
+      };
       if (description.materials->varies_in_space())
-        for (unsigned int l = 0; l + 1 < n_meshes; ++l)
-          try
-            {
-              description.materials->check_on_mesh(*triangulations[l],
-                                                   degrees.front(),
-                                                   communicator);
-            }
-          catch (const ExceptionBase &error)
-            {
-              AssertThrow(false,
-                          ExcMessage(
-                            "The geometric multigrid's coarser mesh " +
-                            std::to_string(l) + " (of " +
-                            std::to_string(n_meshes - 1) +
-                            "; its cells span their children's region, "
-                            "its quadrature points lie between the run's "
-                            "own) evaluates the constants where they are not "
-                            "allowed: " +
-                            Utilities::message_of(error) +
-                            " Allowed: functions of position that are "
-                            "valid over each material's whole region, or "
-                            "<Solver/Preconditioner> = AMG or "
-                            "block Jacobi (the run's own mesh only)."));
-            }
+        {
+          for (unsigned int l = 0; l + 1 < n_meshes; ++l)
+            check(*triangulations[l],
+                  degrees.front(),
+                  "coarser mesh " + std::to_string(l) + " (of " +
+                    std::to_string(n_meshes - 1) +
+                    "; its cells span their children's region, its "
+                    "quadrature points lie between the run's own)");
+          for (unsigned int k = 0; k + 1 < degrees.size(); ++k)
+            check(*description.triangulation,
+                  degrees[k],
+                  "level of degree " + std::to_string(degrees[k]) +
+                    " on the run's mesh (its quadrature points lie "
+                    "between those of the run's degree)");
+        }
       // The meshes at the lowest degree, then the simulator's mesh at each
       // higher degree.
       for (unsigned int l = 0; l < n_levels; ++l)

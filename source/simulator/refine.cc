@@ -14,7 +14,8 @@ namespace rupture
 {
   template <int dim>
   unsigned int
-  Simulator<dim>::execute_refinement(const std::function<bool()> &reflag)
+  Simulator<dim>::execute_refinement(const std::function<bool()> &reflag,
+                                     const bool                   carry_forces)
   {
     if (fault_refinement)
       fault_refinement->mesh_changed();
@@ -22,10 +23,12 @@ namespace rupture
     // the mesh. (The forces of the energy sums belong to their mesh: the
     // callers compute them anew, refresh_step_forces().)
     timer.enter_subsection("Refinement: attach");
-    const std::vector<VectorType *> fields = {&state.displacement,
-                                              &state.velocity,
-                                              &state.acceleration};
-    std::vector<VectorType>         carried;
+    const std::vector<VectorType *> fields =
+      carry_forces ? checkpoint_fields() :
+                     std::vector<VectorType *>{&state.displacement,
+                                               &state.velocity,
+                                               &state.acceleration};
+    std::vector<VectorType> carried;
     for (VectorType *f : fields)
       carried.push_back(*f);
     if (fault)
@@ -47,6 +50,9 @@ namespace rupture
       timer);
     for (unsigned int k = 0; k < fields.size(); ++k)
       {
+        // (On the new partition: setup_dofs() does not reinit every field,
+        // and Trilinos' assignment needs alike maps.)
+        fields[k]->reinit(discretization.locally_owned_dofs(), communicator);
         *fields[k] = carried[k];
         discretization.distribute_hanging(*fields[k]);
       }
@@ -123,15 +129,16 @@ namespace rupture
       D::weighted_balance(discretization.partition(), weight);
     // No cell flagged: p4est partitions the same mesh with the weights
     // (each cell its own), which on the ranks the checkpoint was written
-    // on is the partition of the uninterrupted run.
-    execute_refinement();
-    // As refine_continued_run(): the operators, the first phase's
-    // integrator (run_continued() sets up a later one) and the forces of
-    // the last step, for the state as it is.
+    // on is the partition of the uninterrupted run. The energy sums'
+    // forces of the last step go with the motion: on the same mesh they
+    // stay the step's own (computed anew they would differ by the Newton
+    // residual of an implicit or quasi-static step).
+    execute_refinement({}, true);
+    // As refine_continued_run(): the operators and the first phase's
+    // integrator (run_continued() sets up a later one).
     assemble_physics_matrices();
     if (fault)
       fault->set_time(state.time);
-    refresh_step_forces();
     pcout << "   Partitioned again with <Discretization/Fault cell weight> = "
           << weight << ": the largest rank's weight " << std::setprecision(3)
           << before << " -> "

@@ -59,6 +59,15 @@ namespace rupture
                   const unsigned int        index,
                   const std::string        &which);
 
+    /**
+     * Whether the Kelvin form K of @p c is positive definite with its
+     * smallest eigenvalue above @p fraction of its largest, by a cheap
+     * sufficient test (the Cholesky factorization of K - fraction trace(K)
+     * I) and, where that fails, the eigenvalues themselves.
+     */
+    bool
+    positive_definite_enough(const VoigtMatrix &c, const double fraction);
+
     /// Whether a constant's value is allowed: finite, below 1e20 in
     /// magnitude (Pa).
     bool

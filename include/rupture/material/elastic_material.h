@@ -153,7 +153,9 @@ namespace rupture
        * functions of position evaluated and the factors applied (the
        * stiffness times the stiffness factor, the density times the
        * density factor). Not checked (check_on_mesh() checks them at the
-       * points of the mesh).
+       * points of the mesh). Where anisotropic constants are functions its
+       * wave speeds are those of the material's reference scaled by the
+       * factors, not the point's (check_on_mesh() bounds those).
        */
       template <int dim>
       ElasticConstants

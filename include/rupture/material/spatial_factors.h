@@ -47,8 +47,8 @@ namespace rupture
      * The points at which constants that vary in space are checked on a
      * cell: its Gauss and Gauss-Lobatto points of @p degree + 1 per
      * direction (those of the operators' quadratures; the latter include
-     * the vertices), its centre (the stress output's) and the Gauss points
-     * of its boundary faces (the absorbing boundaries').
+     * the vertices and the faces' points of the absorbing boundaries'
+     * impedance) and its centre (the stress output's).
      */
     template <int dim>
     std::vector<Point<dim>>

@@ -142,8 +142,11 @@ namespace rupture
     /// adaptation on each new mesh (Discretization::refine()): the state is
     /// then carried once through all of them, and only the last is set up.
     /// Returns the number of new fault pairs that had no old pair near.
+    /// With @p carry_forces the energy sums' forces are carried as well
+    /// (a repartition of the same mesh, where they stay exact).
     unsigned int
-    execute_refinement(const std::function<bool()> &reflag = {});
+    execute_refinement(const std::function<bool()> &reflag       = {},
+                       const bool                   carry_forces = false);
     /**
      * Adapt the mesh to the criteria of <Mesh refinement> after the
      * current step of the phase of @p duration (run with the requested
