@@ -67,6 +67,14 @@ namespace rupture
           if (!any)
             continue; // (anisotropic_stiffness() reads it.)
           field.axes = material_axes(entries, i, which);
+          for (const std::string &key : field.keys)
+            {
+              std::map<std::string, double> unit;
+              for (const std::string &other : field.keys)
+                unit[other] = (other == key ? 1. : 0.);
+              field.basis.push_back(
+                rotate(voigt_matrix(field.symmetry, unit), field.axes));
+            }
           // The reference: the tensor at the origin, where allowed.
           VoigtMatrix at_origin{};
           fields[i]                 = std::move(field);
@@ -102,25 +110,23 @@ namespace rupture
 
 
 
-    std::map<std::string, double>
-    TensorFields::constants(const Field &field, const Point<3> &x) const
-    {
-      std::map<std::string, double> c;
-      for (unsigned int k = 0; k < field.keys.size(); ++k)
-        c[field.keys[k]] =
-          field.functions[k] ? field.functions[k]->value(x) : field.numbers[k];
-      return c;
-    }
-
-
-
     template <int dim_>
     VoigtMatrix
     TensorFields::value(const unsigned int i, const Point<dim_> &p) const
     {
       Assert(varies(i), ExcInternalError());
-      const Field &f = fields[i];
-      return rotate(voigt_matrix(f.symmetry, constants(f, padded(p))), f.axes);
+      const Field   &f = fields[i];
+      const Point<3> x = padded(p);
+      VoigtMatrix    c{};
+      for (unsigned int k = 0; k < f.keys.size(); ++k)
+        {
+          const double value =
+            f.functions[k] ? f.functions[k]->value(x) : f.numbers[k];
+          for (unsigned int I = 0; I < 6; ++I)
+            for (unsigned int J = 0; J < 6; ++J)
+              c[I][J] += value * f.basis[k][I][J];
+        }
+      return c;
     }
 
 
@@ -131,45 +137,65 @@ namespace rupture
                                 const Point<dim_> &p,
                                 VoigtMatrix       &c) const
     {
-      const Field       &f = fields[i];
-      std::ostringstream where;
-      where << f.which << " at (" << p << ")";
-      std::map<std::string, double> values;
+      const Field &f     = fields[i];
+      const auto   where = [&]() {
+        std::ostringstream text;
+        text << f.which << " at (" << p << ")";
+        return text.str();
+      };
+      // (Messages are written for a failing point only.)
+      const Point<3>      x = padded(p);
+      std::vector<double> values(f.keys.size());
       try
         {
-          values = constants(f, padded(p));
+          for (unsigned int k = 0; k < f.keys.size(); ++k)
+            values[k] =
+              f.functions[k] ? f.functions[k]->value(x) : f.numbers[k];
         }
       catch (const ExceptionBase &error)
         {
-          return "<Material/Stiffness>" + where.str() +
+          return "<Material/Stiffness>" + where() +
                  ": a function cannot be evaluated there (" +
                  Utilities::message_of(error) + ").";
         }
-      for (const auto &[key, value] : values)
-        if (!valid_constant(value))
-          {
-            std::ostringstream message;
-            message << "<Material/Stiffness>" << where.str() << ": " << key
-                    << " is ";
-            if (std::isnan(value))
-              message << "not a number (NaN)";
-            else
-              message << value;
-            message << ". Allowed: finite values of at most 1e20 in "
-                       "magnitude (Pa).";
-            return message.str();
-          }
-      try
+      c = VoigtMatrix{};
+      for (unsigned int k = 0; k < f.keys.size(); ++k)
         {
-          c = checked_stiffness(f.symmetry, values, f.axes, where.str());
+          if (!valid_constant(values[k]))
+            {
+              std::ostringstream message;
+              message << "<Material/Stiffness>" << where() << ": " << f.keys[k]
+                      << " is ";
+              if (std::isnan(values[k]))
+                message << "not a number (NaN)";
+              else
+                message << values[k];
+              message << ". Allowed: finite values of at most 1e20 in "
+                         "magnitude (Pa).";
+              return message.str();
+            }
+          for (unsigned int I = 0; I < 6; ++I)
+            for (unsigned int J = 0; J < 6; ++J)
+              c[I][J] += values[k] * f.basis[k][I][J];
         }
-      catch (const ExceptionBase &error)
+      // (A rotation keeps the Kelvin eigenvalues: the model's frame will
+      // do; the message is that of numbers.)
+      if (!positive_definite_enough(c, 1e-8))
         {
-          return Utilities::message_of(error);
+          std::map<std::string, double> named;
+          for (unsigned int k = 0; k < f.keys.size(); ++k)
+            named[f.keys[k]] = values[k];
+          try
+            {
+              c = checked_stiffness(f.symmetry, named, f.axes, where());
+            }
+          catch (const ExceptionBase &error)
+            {
+              return Utilities::message_of(error);
+            }
         }
       if (dim == 2 && !model_plane_is_mirror_plane(c))
-        return "Material" +
-               where.str().substr(std::string(" of material").size()) +
+        return "Material" + where().substr(std::string(" of material").size()) +
                " is anisotropic, and in the model's frame its tensor "
                "couples in-plane strains to out-of-plane shear stresses "
                "(C14, C15, C24, C25, C46 or C56 is not zero there): the "

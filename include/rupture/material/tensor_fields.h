@@ -97,15 +97,15 @@ namespace rupture
         std::vector<double>      numbers;
         /// Null where the constant is a number.
         std::vector<std::shared_ptr<FunctionParser<3>>> functions;
-        VoigtMatrix                                     reference{};
-        EnergyRatio                                     energy_ratio;
-        std::string                                     text;
-        std::string                                     which;
+        /// The tensor in the model's frame is linear in the constants:
+        /// sum over k of constant k times basis[k] (the rotated tensor of
+        /// constant k = 1, the others 0), so a value costs no rotation.
+        std::vector<VoigtMatrix> basis;
+        VoigtMatrix              reference{};
+        EnergyRatio              energy_ratio;
+        std::string              text;
+        std::string              which;
       };
-
-      /// The constants' values at @p x.
-      std::map<std::string, double>
-      constants(const Field &field, const Point<3> &x) const;
 
       std::vector<Field> fields;
       unsigned int       dim = 3;
