@@ -119,6 +119,29 @@ namespace tests
     return rows;
   }
 
+  /// The largest difference of two tables (of read_statistics()) relative
+  /// to their largest entry; 1e300 where their shapes differ or they are
+  /// empty.
+  inline double
+  relative_difference(const std::vector<std::vector<double>> &a,
+                      const std::vector<std::vector<double>> &b)
+  {
+    if (a.size() != b.size() || a.empty())
+      return 1e300;
+    double largest = 0, diff = 0;
+    for (unsigned int i = 0; i < a.size(); ++i)
+      {
+        if (a[i].size() != b[i].size())
+          return 1e300;
+        for (unsigned int j = 0; j < a[i].size(); ++j)
+          {
+            largest = std::max(largest, std::abs(a[i][j]));
+            diff    = std::max(diff, std::abs(a[i][j] - b[i][j]));
+          }
+      }
+    return diff / std::max(largest, 1e-300);
+  }
+
   /**
    * The columns that <Mesh refinement> adds to a statistics file, one
    * entry per step: the DoFs and the energy the mesh changes have added so

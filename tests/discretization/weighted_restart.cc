@@ -35,26 +35,6 @@ namespace
     return text.substr(begin, text.find(']', begin) - begin + 1);
   }
 
-  /// The largest difference of two tables relative to their largest entry.
-  double
-  difference(const std::vector<std::vector<double>> &a,
-             const std::vector<std::vector<double>> &b)
-  {
-    if (a.size() != b.size() || a.empty())
-      return 1e300;
-    double largest = 0, diff = 0;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        if (a[i].size() != b[i].size())
-          return 1e300;
-        for (unsigned int j = 0; j < a[i].size(); ++j)
-          {
-            largest = std::max(largest, std::abs(a[i][j]));
-            diff    = std::max(diff, std::abs(a[i][j] - b[i][j]));
-          }
-      }
-    return diff / std::max(largest, 1e-300);
-  }
 } // namespace
 
 int
@@ -104,8 +84,9 @@ main(int argc, char **argv)
                 json_list(b, key).c_str());
   for (const std::string file : {"statistics", "center.dat"})
     {
-      const double d = difference(tests::read_statistics("full/" + file),
-                                  tests::read_statistics("stopped/" + file));
+      const double d =
+        tests::relative_difference(tests::read_statistics("full/" + file),
+                                   tests::read_statistics("stopped/" + file));
       std::printf("%s as the uninterrupted run's: %s\n",
                   file.c_str(),
                   d == 0    ? "to the last digit" :

@@ -67,27 +67,6 @@ namespace
 
 
 
-  /// The largest difference of two tables, relative to their largest entry.
-  double
-  difference(const std::vector<std::vector<double>> &a,
-             const std::vector<std::vector<double>> &b)
-  {
-    if (a.size() != b.size() || a.empty())
-      return 1e300;
-    double largest = 0, diff = 0;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        if (a[i].size() != b[i].size())
-          return 1e300;
-        for (unsigned int j = 0; j < a[i].size(); ++j)
-          {
-            largest = std::max(largest, std::abs(a[i][j]));
-            diff    = std::max(diff, std::abs(a[i][j] - b[i][j]));
-          }
-      }
-    return diff / std::max(largest, 1e-300);
-  }
-
   /// Runs @p prm with @p settings in <name>-numbers, and with @p functions
   /// added in <name>-functions, and says whether the two statistics files
   /// agree to @p tolerance.
@@ -107,7 +86,8 @@ namespace
     std::printf("%s: %zu rows, statistics %s to %g\n",
                 title.c_str(),
                 a.size(),
-                difference(a, b) < tolerance ? "the same" : "differ",
+                tests::relative_difference(a, b) < tolerance ? "the same" :
+                                                               "differ",
                 tolerance);
   }
 } // namespace
@@ -128,9 +108,10 @@ main(int argc, char **argv)
                           "Material/S-wave speed=3464 + 0*z"},
                          1e-10);
   std::printf("3-D split nodes: centre station %s to 1e-10\n",
-              difference(tests::read_statistics("split-3d-numbers/center.dat"),
-                         tests::read_statistics(
-                           "split-3d-functions/center.dat")) < 1e-10 ?
+              tests::relative_difference(
+                tests::read_statistics("split-3d-numbers/center.dat"),
+                tests::read_statistics("split-3d-functions/center.dat")) <
+                  1e-10 ?
                 "the same" :
                 "differs");
   compare_with_functions(

@@ -35,26 +35,6 @@
 
 namespace
 {
-  /// The largest difference of two tables, relative to their largest entry.
-  double
-  difference(const std::vector<std::vector<double>> &a,
-             const std::vector<std::vector<double>> &b)
-  {
-    if (a.size() != b.size() || a.empty())
-      return 1e300;
-    double largest = 0, diff = 0;
-    for (unsigned int i = 0; i < a.size(); ++i)
-      {
-        if (a[i].size() != b[i].size())
-          return 1e300;
-        for (unsigned int j = 0; j < a[i].size(); ++j)
-          {
-            largest = std::max(largest, std::abs(a[i][j]));
-            diff    = std::max(diff, std::abs(a[i][j] - b[i][j]));
-          }
-      }
-    return diff / std::max(largest, 1e-300);
-  }
 
   /// Runs @p prm with @p settings plus @p numbers in <name>-numbers and
   /// plus @p functions in <name>-functions; says whether the statistics
@@ -85,7 +65,8 @@ namespace
                     file.c_str(),
                     x.size(),
                     tolerance,
-                    difference(x, y) < tolerance ? "yes" : "no");
+                    tests::relative_difference(x, y) < tolerance ? "yes" :
+                                                                   "no");
       }
   }
 } // namespace
