@@ -6,9 +6,12 @@
 // the 3-D explicit split-node rupture of fault/split_node_3d.prm with
 // weight 4, run through (30 steps) and with checkpoints every 10 steps,
 // the newest removed as if the run had been killed after step 20, then
-// resumed. The resumed run's last mesh has the uninterrupted run's cells
-// and fault cells on each rank (summary.json), its weighted load is as
-// even, and its statistics and station are the uninterrupted run's.
+// resumed; the same for the implicit penalty rupture of
+// fault/penalty_rupture_3d.prm (the energy sums' forces carried, not
+// computed anew). The resumed run's last mesh has the uninterrupted run's
+// cells and fault cells on each rank (summary.json), its weighted load is
+// as even, and its statistics and station are the uninterrupted run's (to
+// the last digit for the explicit run, within 1e-8 for the implicit one).
 
 #include <deal.II/base/mpi.h>
 
@@ -42,55 +45,65 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const MPI_Comm                           comm = MPI_COMM_WORLD;
-  const bool        root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-  const std::string prm =
-    std::string(SOURCE_DIR) + "/../fault/split_node_3d.prm";
-  const std::vector<std::string> settings = {
-    "Discretization/Fault cell weight=4",
-    "Time integration/End time=0.6",
-    "Checkpoint/Interval=10"};
-  tests::run_in("full", {prm}, settings);
-  tests::run_in("stopped", {prm}, settings);
-  if (root)
-    std::filesystem::remove_all("stopped/checkpoint/step-000000030");
-  MPI_Barrier(comm);
-  std::vector<std::string> resume = {prm, "--resume"};
-  for (const std::string &s : settings)
-    resume.insert(resume.end(), {"--set", s});
-  resume.insert(resume.end(), {"--set", "Output directory=stopped"});
-  const int code = tests::run(resume);
-  MPI_Barrier(comm);
-  if (!root)
-    return 0;
-  const std::string log = tests::read_file("stopped/log.txt");
-  const auto        at  = log.find("*** Continuing after step");
-  std::printf("resumed: exit code %d, %s\n",
-              code,
-              at == std::string::npos ?
-                "no 'Continuing' line" :
-                log.substr(at, log.find('\n', at) - at).c_str());
-  const auto line = [&](const std::string &start) {
-    const auto p = log.find(start);
-    return p == std::string::npos ? std::string("(missing)") :
-                                    log.substr(p, log.find('\n', p) - p);
-  };
-  std::printf("%s\n", line("   Partitioned again").c_str());
-  const std::string a = tests::read_file("full/summary.json"),
-                    b = tests::read_file("stopped/summary.json");
-  for (const std::string key : {"cells per rank", "fault cells per rank"})
-    std::printf("%s: uninterrupted %s, resumed %s\n",
-                key.c_str(),
-                json_list(a, key).c_str(),
-                json_list(b, key).c_str());
-  for (const std::string file : {"statistics", "center.dat"})
+  const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+  // The explicit split-node rupture, then the implicit penalty one (whose
+  // continued steps on two ranks end their Newton iterations with other
+  // round-off, tests/simulator/checkpoint_restart: within 1e-8 there).
+  for (const std::string name : {"split_node_3d", "penalty_rupture_3d"})
     {
-      const double d =
-        tests::relative_difference(tests::read_statistics("full/" + file),
-                                   tests::read_statistics("stopped/" + file));
-      std::printf("%s as the uninterrupted run's: %s\n",
-                  file.c_str(),
-                  d == 0    ? "to the last digit" :
-                  d < 1e-10 ? "within 1e-10" :
-                              "no");
+      const std::string prm =
+        std::string(SOURCE_DIR) + "/../fault/" + name + ".prm";
+      const std::vector<std::string> settings = {
+        "Discretization/Fault cell weight=4",
+        "Time integration/End time=0.6",
+        "Checkpoint/Interval=10"};
+      tests::run_in("full", {prm}, settings);
+      tests::run_in("stopped", {prm}, settings);
+      if (root)
+        std::filesystem::remove_all("stopped/checkpoint/step-000000030");
+      MPI_Barrier(comm);
+      std::vector<std::string> resume = {prm, "--resume"};
+      for (const std::string &s : settings)
+        resume.insert(resume.end(), {"--set", s});
+      resume.insert(resume.end(), {"--set", "Output directory=stopped"});
+      const int code = tests::run(resume);
+      MPI_Barrier(comm);
+      if (!root)
+        continue;
+      std::printf("%s:\n", name.c_str());
+      const std::string log = tests::read_file("stopped/log.txt");
+      const auto        at  = log.find("*** Continuing after step");
+      std::printf("resumed: exit code %d, %s\n",
+                  code,
+                  at == std::string::npos ?
+                    "no 'Continuing' line" :
+                    log.substr(at, log.find('\n', at) - at).c_str());
+      const auto line = [&](const std::string &start) {
+        const auto p = log.find(start);
+        return p == std::string::npos ? std::string("(missing)") :
+                                        log.substr(p, log.find('\n', p) - p);
+      };
+      std::printf("%s\n", line("   Partitioned again").c_str());
+      const std::string a = tests::read_file("full/summary.json"),
+                        b = tests::read_file("stopped/summary.json");
+      for (const std::string key : {"cells per rank", "fault cells per rank"})
+        std::printf("%s: uninterrupted %s, resumed %s\n",
+                    key.c_str(),
+                    json_list(a, key).c_str(),
+                    json_list(b, key).c_str());
+      for (const std::string file : {"statistics", "center.dat"})
+        {
+          const double d =
+            tests::relative_difference(tests::read_statistics("full/" + file),
+                                       tests::read_statistics("stopped/" +
+                                                              file));
+          // (Exact for the explicit run; within 1e-8 for the implicit one,
+          // where on some machines it may be exact too.)
+          const bool exact = (name == "split_node_3d");
+          std::printf("%s as the uninterrupted run's %s: %s\n",
+                      file.c_str(),
+                      exact ? "to the last digit" : "within 1e-8",
+                      (exact ? d == 0 : d < 1e-8) ? "yes" : "no");
+        }
     }
 }
