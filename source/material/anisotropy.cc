@@ -399,8 +399,8 @@ namespace rupture
 
 
 
-    double
-    EnergyRatio::operator()(const VoigtMatrix &c) const
+    VoigtMatrix
+    EnergyRatio::transformed(const VoigtMatrix &c) const
     {
       // M = L^-1 K L^-T, with L^-1 lower triangular.
       VoigtMatrix k{}, t{}, m{};
@@ -424,7 +424,75 @@ namespace rupture
               sum += t[a][q] * inverse_factor[b][q];
             m[a][b] = m[b][a] = sum;
           }
+      return m;
+    }
+
+
+
+    double
+    EnergyRatio::operator()(const VoigtMatrix &c) const
+    {
+      VoigtMatrix m = transformed(c);
       return largest_symmetric_eigenvalue(m, n);
+    }
+
+
+
+    bool
+    EnergyRatio::certainly_below(const VoigtMatrix &c, const double t) const
+    {
+      // Cholesky of A = t I - M, in place; a pivot that is not positive
+      // (or not a number) leaves the question open.
+      VoigtMatrix a = transformed(c);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
+          a[i][j] = (i == j ? t : 0.) - a[i][j];
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          double pivot = a[j][j];
+          for (unsigned int k = 0; k < j; ++k)
+            pivot -= a[j][k] * a[j][k];
+          if (!(pivot > 0))
+            return false;
+          a[j][j] = std::sqrt(pivot);
+          for (unsigned int i = j + 1; i < n; ++i)
+            {
+              double sum = a[i][j];
+              for (unsigned int k = 0; k < j; ++k)
+                sum -= a[i][k] * a[j][k];
+              a[i][j] = sum / a[j][j];
+            }
+        }
+      return true;
+    }
+
+
+
+    LargestRatio::LargestRatio(const EnergyRatio &ratio)
+      : ratio(&ratio)
+    {}
+
+
+
+    double
+    LargestRatio::add(const VoigtMatrix &c, const double w)
+    {
+      double value;
+      if (has_last && c == last)
+        value = last_ratio * w;
+      else if (largest_value > 0 &&
+               ratio->certainly_below(c, largest_value / w * (1 - 1e-10)))
+        return -1;
+      else
+        {
+          last       = c;
+          last_ratio = (*ratio)(c);
+          ++solves;
+          has_last   = true;
+          value      = last_ratio * w;
+        }
+      largest_value = std::max(largest_value, value);
+      return value;
     }
 
 

@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 
 namespace rupture
@@ -722,14 +723,19 @@ namespace rupture
 
 
     template <int dim_>
-    std::array<double, 3>
-    ElasticMaterials::local_ratios(const types::material_id id,
-                                   const Point<dim_>       &p,
-                                   const EnergyRatio       &local) const
+    std::array<double, 2>
+    ElasticMaterials::extreme_ratios(const types::material_id        id,
+                                     const std::vector<Point<dim_>> &points,
+                                     const EnergyRatio *local) const
     {
-      return {local(tensors.value(id, p)) * factors.stiffness(id, p),
-              factors.density(id, p),
-              std::numeric_limits<double>::quiet_NaN()};
+      LargestRatio s(local ? *local : tensors.energy_ratio(id));
+      double       r = std::numeric_limits<double>::infinity();
+      for (const Point<dim_> &p : points)
+        {
+          s.add(tensors.value(id, p), factors.stiffness(id, p));
+          r = std::min(r, factors.density(id, p));
+        }
+      return {s.largest(), r};
     }
 
 
@@ -819,9 +825,12 @@ namespace rupture
       // the reference: rho(p) v^2 = eps : c(p) : eps for a unit strain
       // eps = sym(polarisation x direction), at most ratio(p) s(p) times
       // the reference's.
-      std::string error;
-      double      fastest = 0;
-      VoigtMatrix c;
+      // (The energy ratio's eigenvalue problem is solved only where a point
+      // may raise the fastest speed so far: LargestRatio.)
+      std::string                                error;
+      double                                     fastest = 0;
+      VoigtMatrix                                c;
+      std::vector<std::unique_ptr<LargestRatio>> largest(materials.size());
       for (const auto &cell : mesh.active_cell_iterators())
         if (cell->is_locally_owned() && error.empty() &&
             cell->material_id() < materials.size() &&
@@ -834,8 +843,14 @@ namespace rupture
                 break;
               const double s = factors.stiffness(id, p),
                            r = factors.density(id, p);
+              if (!largest[id])
+                largest[id] =
+                  std::make_unique<LargestRatio>(tensors.energy_ratio(id));
+              const double raised = largest[id]->add(c, s / r);
+              if (raised < 0)
+                continue;
               const double v =
-                std::sqrt(tensors.ratio(id, c) * s / r) *
+                std::sqrt(raised) *
                 materials[id].template wave_speeds<dim_>().fastest;
               if (v <= speed_of_light)
                 {
@@ -1046,14 +1061,14 @@ namespace rupture
     template std::vector<std::int64_t>
     ElasticMaterials::rounded_tensor<3>(const types::material_id,
                                         const Point<3> &) const;
-    template std::array<double, 3>
-    ElasticMaterials::local_ratios<2>(const types::material_id,
-                                      const Point<2> &,
-                                      const EnergyRatio &) const;
-    template std::array<double, 3>
-    ElasticMaterials::local_ratios<3>(const types::material_id,
-                                      const Point<3> &,
-                                      const EnergyRatio &) const;
+    template std::array<double, 2>
+    ElasticMaterials::extreme_ratios<2>(const types::material_id,
+                                        const std::vector<Point<2>> &,
+                                        const EnergyRatio *) const;
+    template std::array<double, 2>
+    ElasticMaterials::extreme_ratios<3>(const types::material_id,
+                                        const std::vector<Point<3>> &,
+                                        const EnergyRatio *) const;
     template double
     ElasticMaterials::check_tensors<2>(const Triangulation<2> &,
                                        const unsigned int,

@@ -227,6 +227,15 @@ namespace rupture
 
 
 
+    const EnergyRatio &
+    TensorFields::energy_ratio(const unsigned int i) const
+    {
+      Assert(varies(i), ExcInternalError());
+      return fields[i].energy_ratio;
+    }
+
+
+
     const std::string &
     TensorFields::text(const unsigned int i) const
     {

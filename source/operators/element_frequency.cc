@@ -365,24 +365,37 @@ namespace rupture
       const auto cell_ratio = [&](const auto                      &cell,
                                   const std::vector<std::int64_t> &tensor) {
         double s_max = 0, r_min = 1e300,
-               lambda_max = std::numeric_limits<double>::quiet_NaN();
-        const Material::EnergyRatio local =
-          tensor.empty() ?
-            Material::EnergyRatio() :
-            Material::EnergyRatio(
-              Material::ElasticMaterials::rounded_tensor_value(tensor, 0), dim);
+               lambda_max           = std::numeric_limits<double>::quiet_NaN();
+        const types::material_id id = cell->material_id();
+        if (materials.tensor_given_as_functions(id))
+          {
+            std::vector<Point<dim>> points;
+            for (const Quadrature<dim> *q :
+                 {&q_cells[0],
+                  static_cast<const Quadrature<dim> *>(&q_lumped[0])})
+              for (const Point<dim> &xi : q->get_points())
+                points.push_back(mapping.transform_unit_to_real_cell(cell, xi));
+            const Material::EnergyRatio local =
+              tensor.empty() ?
+                Material::EnergyRatio() :
+                Material::EnergyRatio(
+                  Material::ElasticMaterials::rounded_tensor_value(tensor, 0),
+                  dim);
+            const auto [s, r] =
+              materials.extreme_ratios(id,
+                                       points,
+                                       tensor.empty() ? nullptr : &local);
+            return std::make_pair(s / r, lambda_max / s);
+          }
         for (const Quadrature<dim> *q :
              {&q_cells[0], static_cast<const Quadrature<dim> *>(&q_lumped[0])})
           for (const Point<dim> &xi : q->get_points())
             {
               const Point<dim> p =
                 mapping.transform_unit_to_real_cell(cell, xi);
-              const auto [s, r, lambda] =
-                tensor.empty() ?
-                  materials.reference_ratios(cell->material_id(), p) :
-                  materials.local_ratios(cell->material_id(), p, local);
-              s_max = std::max(s_max, s);
-              r_min = std::min(r_min, r);
+              const auto [s, r, lambda] = materials.reference_ratios(id, p);
+              s_max                     = std::max(s_max, s);
+              r_min                     = std::min(r_min, r);
               if (!std::isnan(lambda))
                 lambda_max = std::isnan(lambda_max) ?
                                lambda :

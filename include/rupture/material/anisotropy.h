@@ -139,12 +139,65 @@ namespace rupture
       double
       operator()(const VoigtMatrix &c) const;
 
+      /**
+       * Whether operator()(c) is certainly below @p t: t I - M positive
+       * definite by a Cholesky factorization of the same M that
+       * operator() computes (some 20 times cheaper than its eigenvalue).
+       */
+      bool
+      certainly_below(const VoigtMatrix &c, const double t) const;
+
     private:
+      /// M = L^-1 K L^-T for the Kelvin form K of @p c.
+      VoigtMatrix
+      transformed(const VoigtMatrix &c) const;
+
       /// The number of strain components and their Voigt indices.
       unsigned int                n    = 6;
       std::array<unsigned int, 6> rows = {{0, 1, 2, 3, 4, 5}};
       /// The inverse of the reference's Kelvin form's Cholesky factor.
       VoigtMatrix inverse_factor{};
+    };
+
+    /**
+     * The largest of ratio(c_k) w_k over tensors c_k with weights w_k > 0,
+     * taken one at a time: the eigenvalue problem is solved only for a
+     * tensor that may raise the largest so far (EnergyRatio::
+     * certainly_below() with a margin of 1e-10 passes over the others) or
+     * that differs from the last one solved. The result is the maximum of
+     * the exact values, the same number.
+     */
+    class LargestRatio
+    {
+    public:
+      explicit LargestRatio(const EnergyRatio &ratio);
+
+      /// Takes @p c with weight @p w: ratio(c) w where it was computed (or
+      /// repeated from the last tensor), -1 where it was passed over.
+      double
+      add(const VoigtMatrix &c, const double w);
+
+      /// The largest ratio(c) w so far (0 before the first).
+      double
+      largest() const
+      {
+        return largest_value;
+      }
+
+      /// The number of eigenvalue problems solved so far.
+      unsigned int
+      solved() const
+      {
+        return solves;
+      }
+
+    private:
+      const EnergyRatio *ratio;
+      unsigned int       solves = 0;
+      double             largest_value = 0;
+      bool               has_last      = false;
+      VoigtMatrix        last{};
+      double             last_ratio = 0;
     };
 
     /**

@@ -225,14 +225,19 @@ namespace rupture
       ElasticConstants
       local_reference(const types::material_id id, const VoigtMatrix &c) const;
 
-      /// reference_ratios() of an anisotropic material whose constants are
-      /// functions against the tensor whose energy ratio is @p local
-      /// instead of the material's reference.
+      /**
+       * For an anisotropic material whose constants are functions: the
+       * largest stiffness ratio s and the smallest density ratio r of
+       * reference_ratios() over @p points, with the energy ratio against
+       * @p local where it is given instead of the material's reference.
+       * The eigenvalue problem is solved only at points that may raise
+       * the largest s (LargestRatio): the same numbers, cheaper.
+       */
       template <int dim>
-      std::array<double, 3>
-      local_ratios(const types::material_id id,
-                   const Point<dim>        &p,
-                   const EnergyRatio       &local) const;
+      std::array<double, 2>
+      extreme_ratios(const types::material_id       id,
+                     const std::vector<Point<dim>> &points,
+                     const EnergyRatio             *local) const;
 
       /// Whether isotropic constants are functions of position.
       bool

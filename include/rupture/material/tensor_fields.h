@@ -84,6 +84,10 @@ namespace rupture
       double
       ratio(const unsigned int i, const VoigtMatrix &c) const;
 
+      /// The EnergyRatio against reference(i).
+      const EnergyRatio &
+      energy_ratio(const unsigned int i) const;
+
       /// The <Material/Stiffness> field of material @p i (for the screen).
       const std::string &
       text(const unsigned int i) const;
