@@ -306,6 +306,22 @@ namespace rupture
           result += (result.empty() ? "" : " ") + dealii::Utilities::trim(line);
       return result;
     }
+
+
+
+    std::string
+    parser_reason(const ExceptionBase &e)
+    {
+      std::string reason = message_of(e);
+      const auto  from   = reason.find("> (");
+      const auto  to     = reason.find(").", from);
+      if (from != std::string::npos && to != std::string::npos)
+        reason = reason.substr(from + 3, to - from - 3);
+      return reason;
+    }
+
+
+
     std::string
     user_message(const ExceptionBase &e)
     {

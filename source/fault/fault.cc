@@ -193,8 +193,11 @@ namespace rupture
             "the subdifferential sliding rule (along the normal of the "
             "ellipse at the traction, not along the traction), and the "
             "friction law sees the slip measured as |A slip|. 1 (the "
-            "default) is isotropic friction; in 2-D the fault has one shear "
-            "direction and r has no effect. Every fault model and friction "
+            "default) is isotropic friction. In 2-D (plane strain) the fault's "
+            "one shear direction must be an axis: <First direction> in the "
+            "model plane (the in-plane slip sees the strength S, as "
+            "isotropic friction) or normal to it (0, 0, 1: strength r S, "
+            "slip measured r |slip|). Every fault model and friction "
             "law; a law of the slip rate sees the slip rate |A V|, and "
             "radiation damping acts on the slip rate as a vector.");
           prm.declare_entry("First direction",
@@ -335,26 +338,58 @@ namespace rupture
         }
       prm.leave_subsection();
       prm.enter_subsection("Anisotropic friction");
-      fault->friction_ellipse.a2   = prm.get_double("Strength ratio");
-      const std::string ratio_text = prm.get("Strength ratio");
-      if (dim == 3)
-        {
-          // (A 3-D vector; in 2-D the entry is not read.)
-          const Tensor<1, 3> d =
-            Utilities::parse_vector<3>(prm.get("First direction"),
-                                       "Fault/Anisotropic friction/First "
-                                       "direction");
-          for (unsigned int c = 0; c < dim; ++c)
-            fault->friction_ellipse.direction[c] = d[c];
-        }
-      else
-        fault->friction_ellipse.a2 = 1;
+      const double       r              = prm.get_double("Strength ratio");
+      const std::string  direction_text = prm.get("First direction");
+      // (A 3-D vector also in 2-D.)
+      const Tensor<1, 3> d =
+        Utilities::parse_vector<3>(direction_text,
+                                   "Fault/Anisotropic friction/First "
+                                   "direction");
       prm.leave_subsection();
-      fault->anisotropic_friction = (fault->friction_ellipse.a2 != 1);
-      AssertThrow(!fault->anisotropic_friction ||
-                    fault->friction_ellipse.direction.norm() > 0,
+      AssertThrow(r == 1 || d.norm() > 0,
                   ExcMessage("<Fault/Anisotropic friction/First direction> "
                              "must not be the zero vector."));
+      fault->friction_ellipse.a2 = r;
+      for (unsigned int c = 0; c < dim; ++c)
+        fault->friction_ellipse.direction[c] = d[c];
+      if (dim == 2 && r != 1)
+        {
+          // In 2-D the fault's one shear direction is the in-plane
+          // tangent, and plane strain keeps the slip in the plane: the
+          // ellipse's axes must be the tangent and the normal z of the
+          // model plane, and the set K is the interval |tau| <= a S with
+          // a the ellipse's factor along the tangent (its slip rate a |V|).
+          const double in_plane = std::hypot(d[0], d[1]);
+          if (std::abs(d[2]) <= 1e-12 * d.norm())
+            fault->friction_ellipse.a1 = 1; // tangent = first axis
+          else if (in_plane <= 1e-12 * d.norm())
+            {
+              // The tangent is the second axis (strength r S).
+              fault->friction_ellipse.a1        = r;
+              fault->friction_ellipse.a2        = 1;
+              fault->friction_ellipse.direction = 0;
+            }
+          else
+            AssertThrow(false,
+                        ExcMessage(
+                          "<Fault/Anisotropic friction/First direction> = " +
+                          direction_text +
+                          " is oblique to the 2-D model plane: the friction "
+                          "ellipse's axes would not be the fault's in-plane "
+                          "direction and the normal to the plane, and its "
+                          "sliding rule would move the slip out of the "
+                          "plane, which plane strain forbids. Allowed in "
+                          "2-D: a direction in the model plane (third "
+                          "component 0: the in-plane slip has the strength "
+                          "S along the first axis) or normal to it (0, 0, "
+                          "1: the in-plane slip lies along the second axis, "
+                          "strength <Strength ratio> times S)."));
+        }
+      // (In 2-D a first axis along the tangent leaves the in-plane
+      // friction isotropic.)
+      fault->anisotropic_friction =
+        (fault->friction_ellipse.a1 != 1 ||
+         (dim == 3 && fault->friction_ellipse.a2 != 1));
       prm.enter_subsection("Forced slip");
       fault->forced_region = Utilities::parse_function<dim>(
         prm.get("Region"), 1, "Fault/Forced slip/Region", variables);
@@ -499,7 +534,8 @@ namespace rupture
               pair.normal /= pair.area;
               pair.shear_modulus =
                 shear_modulus_across(pair.material, pair.normal, pair.location);
-              if (anisotropic_friction)
+              if (friction_ellipse.a2 != 1 &&
+                  friction_ellipse.direction.norm() > 0)
                 {
                   const Tensor<1, dim> &d = friction_ellipse.direction;
                   std::ostringstream    where;

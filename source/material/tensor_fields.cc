@@ -48,12 +48,7 @@ namespace rupture
                 }
               catch (const ExceptionBase &error)
                 {
-                  // The parser's reason, without the general advice.
-                  std::string reason = Utilities::message_of(error);
-                  const auto  from   = reason.find("> (");
-                  const auto  to     = reason.find(").", from);
-                  if (from != std::string::npos && to != std::string::npos)
-                    reason = reason.substr(from + 3, to - from - 3);
+                  const std::string reason = Utilities::parser_reason(error);
                   AssertThrow(false,
                               ExcMessage("<Material/Stiffness>" + which + ": " +
                                          key + " = '" + text +

@@ -148,6 +148,11 @@ main(int argc, char **argv)
                "normal = 0, 1, 0\n  subsection Anisotropic friction\n    set "
                "Strength ratio = 2\n    set First direction = 0, 2, 0\n  "
                "end\nend\n");
+  write("anisotropic_friction_oblique_2d.prm",
+        base + "subsection Fault\n  set Model = penalty contact\n  set "
+               "Plane point = 0, 500\n  set Plane normal = 0, 1\n  "
+               "subsection Anisotropic friction\n    set Strength ratio = "
+               "2\n    set First direction = 1, 0, 1\n  end\nend\n");
   write("anisotropic_2d.prm",
         base + "subsection Material\n  set Symmetry = transversely "
                "isotropic\n  set Stiffness = C11 = 6e10, C33 = 4e10, C13 = "
@@ -311,6 +316,9 @@ main(int argc, char **argv)
         {"function_with_factor.prm"});
   check("anisotropic friction direction normal to the fault",
         {"anisotropic_friction_normal.prm"});
+  check("2-D anisotropic friction whose first direction is oblique to the "
+        "model plane",
+        {"anisotropic_friction_oblique_2d.prm"});
   check("2-D anisotropic material without a mirror plane",
         {"anisotropic_2d.prm"});
   check("fault plane that cuts through cells", {"fault_plane.prm"});

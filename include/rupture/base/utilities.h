@@ -106,6 +106,12 @@ namespace rupture
     std::string
     message_of(const ExceptionBase &e);
 
+    /// The reason parse_function() gives for an expression it refused
+    /// (the function parser's own words), without the general advice
+    /// around it: for messages that name the entry themselves.
+    std::string
+    parser_reason(const ExceptionBase &e);
+
     /**
      * What the user is shown for an exception that ends the run: the
      * program's own checks (ExcMessage) are messages already (message_of());
