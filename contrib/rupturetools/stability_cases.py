@@ -550,6 +550,19 @@ def build_cases():
                       "no mirror plane",
                       ti + [soft, "Material/Material axes=1, 0, 1"],
                       name="axis out of the model plane"))
+    # The same rock in 3-D, its axis oblique to every model axis (all 21
+    # constants non-zero in the model's frame), on the 3-D patch; and the
+    # nearly singular tensor there.
+    for scheme in both:
+        cases.append(Case("anisotropy", "patch3d", scheme,
+                          "TI, c_max / c_min = 10",
+                          ti + [soft, "Material/Material axes=1, 2, 3"],
+                          name="axis (1, 2, 3)"))
+    cases.append(Case("anisotropy", "patch3d", "implicit", "nearly singular",
+                      ti + [constants(C11=lam + 2 * mu, C33=lam + 2 * mu,
+                                      C13=lam, C44=1e-9 * mu, C66=mu),
+                            "Material/Material axes=1, 2, 3"],
+                      name="C44 = 1e-9 mu, axis (1, 2, 3)"))
 
     # 12. Anisotropic friction (issue 39) on the 3-D patch, both schemes:
     # friction ellipses of aspect ratio 1/20 to 20 (the strength along
@@ -581,6 +594,27 @@ def build_cases():
                       ["Fault/Anisotropic friction/Strength ratio=2",
                        "Fault/Anisotropic friction/First direction=0, 1, 0"],
                       name="First direction = n"))
+    # In 2-D the set is an interval: with the first direction normal to the
+    # model plane the in-plane slip has the strength r S (the in-plane
+    # base's prestress scaled by r, so that the ellipse norm is the
+    # isotropic run's); a direction oblique to the plane is refused.
+    for ratio in (0.05, 20):
+        traction = ("((abs(x) <= 1500) ? 81.6e6 : 70e6) * %r; -120e6"
+                    % ratio)
+        for scheme in both:
+            cases.append(Case("anisotropic friction", "inplane", scheme,
+                              "2-D, r = %g" % ratio,
+                              ["Fault/Anisotropic friction/Strength ratio=%r"
+                               % ratio,
+                               "Fault/Anisotropic friction/First direction="
+                               "0, 0, 1",
+                               "Fault/Initial traction=" + traction],
+                              name="first direction normal to the plane"))
+    cases.append(Case("anisotropic friction", "inplane", "explicit",
+                      "2-D, oblique",
+                      ["Fault/Anisotropic friction/Strength ratio=2",
+                       "Fault/Anisotropic friction/First direction=1, 0, 1"],
+                      name="First direction oblique to the plane"))
 
     # The in-plane explicit base, as a cheap check of the second base in --quick.
     for c in cases:
@@ -696,7 +730,10 @@ FAMILIES = [
      "30 degrees in the model plane; and two tensors the input check must "
      "refuse: a nearly singular one (C44 = 1e-9 mu) and one whose axis "
      "leaves the model plane, which couples in-plane and out-of-plane "
-     "motion."),
+     "motion. In 3-D the same transversely isotropic rock with its axis "
+     "along (1, 2, 3), oblique to every model axis (all 21 constants "
+     "non-zero in the model's frame), on the 3-D miniature of TPV3 of the "
+     "anisotropic-friction family, and the nearly singular tensor there."),
     ("anisotropic friction", "Anisotropic friction",
      "A 3-D miniature of TPV3 (500 m cells, the fault 4 x 3 km, the "
      "prestress 30 degrees from strike) with friction ellipses of aspect "
@@ -709,7 +746,11 @@ FAMILIES = [
      "unit slip falls as r^2, so that at r = 0.1 and 0.05 the patch is far "
      "too small to nucleate and the fault creeps by a millimetre or two "
      "(as it must). A ratio outside [0.01, 100] and a first direction "
-     "normal to the fault must be refused."),
+     "normal to the fault must be refused. In 2-D, where the set is an "
+     "interval, the in-plane base with the first direction normal to the "
+     "model plane (the in-plane slip along the second axis: strength r S) "
+     "and its prestress times r, at r = 0.05 and 20, and a first direction "
+     "oblique to the model plane, which must be refused."),
 ]
 
 

@@ -18,19 +18,21 @@ namespace tests
    * Run @p prm with @p settings under <Time integration/Scheme> @p scheme
    * (implicit: step 0.1; explicit: the stable step) at polynomial degree
    * @p degree on meshes refined 0 to 3 times (degree 1) or 0 to 2 times
-   * (degree 2), and print the L2 error at the end (the statistics' last
-   * column) against the cell size 0.25 / 2^level with the order between
-   * consecutive meshes.
+   * (degree 2), or @p levels - 1 times where given, and print the L2
+   * error at the end (the statistics' last column) against the cell size
+   * 0.25 / 2^level with the order between consecutive meshes.
    */
   inline void
   print_mms_ladder(const std::string              &prm,
                    const std::string              &scheme,
                    const std::vector<std::string> &settings,
-                   const unsigned int              degree)
+                   const unsigned int              degree,
+                   const unsigned int              levels = 0)
   {
     std::printf("  %-8s %-12s %s\n", "h", "L2 error", "order");
-    double previous = 0;
-    for (unsigned int level = 0; level < (degree == 1 ? 4u : 3u); ++level)
+    double             previous = 0;
+    const unsigned int n        = levels > 0 ? levels : (degree == 1 ? 4u : 3u);
+    for (unsigned int level = 0; level < n; ++level)
       {
         const std::string        out = "output-" + std::to_string(level);
         std::vector<std::string> all = settings;

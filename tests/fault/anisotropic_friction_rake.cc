@@ -70,7 +70,7 @@ main(int argc, char **argv)
         }
       const auto   rows    = tests::read_statistics(directions);
       unsigned int sliding = 0;
-      double       worst   = 0;
+      double       worst = 0, angle_error = 0, largest_angle = 0;
       for (const auto &row : rows)
         if (row.size() == 5 && row[2] != 0)
           {
@@ -79,6 +79,14 @@ main(int argc, char **argv)
               std::atan2(std::sin(t) / 4, std::cos(t)) * 180 / M_PI;
             worst =
               std::max(worst, std::abs(std::remainder(row[2] - normal, 360.)));
+            // The last column: the angle between the frictional slip rate
+            // and the shear traction, both in the fault plane.
+            angle_error =
+              std::max(angle_error,
+                       std::abs(
+                         row[4] -
+                         std::abs(std::remainder(row[2] - row[3], 360.))));
+            largest_angle = std::max(largest_angle, row[4]);
             ++sliding;
           }
       std::printf("strength ratio 2, centre station: %s rows, sliding in more "
@@ -89,5 +97,11 @@ main(int argc, char **argv)
                   sliding > 5 ? "yes" : "no",
                   worst <= 1 ? "yes" : "no",
                   rows.empty() ? 0. : rows.back()[1]);
+      std::printf("strength ratio 2, centre station: the angle between slip "
+                  "rate and shear traction equal to the difference of their "
+                  "directions within 0.01 degrees: %s; largest angle %.0f "
+                  "degrees (not 0: the slip leaves the traction)\n",
+                  angle_error <= 0.01 ? "yes" : "no",
+                  largest_angle);
     }
 }
