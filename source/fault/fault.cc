@@ -79,15 +79,21 @@ namespace rupture
         prm.declare_entry(
           "Radiation damping",
           "0",
-          Patterns::Double(0),
+          Patterns::Anything(),
           "eta (Pa s/m): the quasi-dynamic approximation of the waves a "
           "slipping fault radiates (Rice 1993): the shear strength gains "
           "eta V at slip rate V, as the SCEC SEAS benchmarks' quasi-dynamic "
           "problems ask with eta = mu / (2 c_s) (half the shear impedance; "
-          "4.62e6 for their rho = 2670 kg/m^3, c_s = 3464 m/s). With "
-          "'penalty contact' in quasi-static phases, where no wave carries "
-          "the energy away; 0 (the default) for none. Not with 'traction at "
-          "split nodes' (explicit dynamics radiates the waves itself).");
+          "4.62e6 for their rho = 2670 kg/m^3, c_s = 3464 m/s). A number "
+          ">= 0, or 'auto': at each fault node half the shear impedance "
+          "across the fault, sqrt(rho mu_n) / 2, with mu_n the material's "
+          "shear stiffness across the fault plane (for an anisotropic "
+          "material from its tensor: the mean of the Christoffel matrix's "
+          "eigenvalues in the fault plane; mu / (2 c_s) for an isotropic "
+          "one) and rho its density there. With 'penalty contact' in "
+          "quasi-static phases, where no wave carries the energy away; 0 "
+          "(the default) for none. Not with 'traction at split nodes' "
+          "(explicit dynamics radiates the waves itself).");
         prm.declare_entry("Plus side",
                           "plane",
                           Patterns::Selection("plane|material ids"),
@@ -260,7 +266,28 @@ namespace rupture
       fault->centred_split_node =
         (prm.get("Split-node friction time") == "centred");
       fault->centred_penalty = (prm.get("Penalty friction time") == "centred");
-      fault->radiation_damping = prm.get_double("Radiation damping");
+      {
+        // A number >= 0, or 'auto' (stored as -1): half the shear
+        // impedance across the fault at each node.
+        const std::string text =
+          dealii::Utilities::trim(prm.get("Radiation damping"));
+        double value = 0;
+        if (text == "auto")
+          fault->radiation_damping = -1;
+        else
+          {
+            std::istringstream in(text);
+            in >> value;
+            AssertThrow(!in.fail() && in.eof() && std::isfinite(value) &&
+                          value >= 0,
+                        ExcMessage("<Fault/Radiation damping> = '" + text +
+                                   "' is neither a number >= 0 (Pa s/m) nor "
+                                   "'auto'. Allowed: a number >= 0 or "
+                                   "'auto' (half the shear impedance across "
+                                   "the fault, from the material)."));
+            fault->radiation_damping = value;
+          }
+      }
       AssertThrow(!fault->split_node_method || fault->radiation_damping == 0,
                   ExcMessage("<Fault/Radiation damping> = " +
                              prm.get("Radiation damping") +
@@ -338,8 +365,8 @@ namespace rupture
         }
       prm.leave_subsection();
       prm.enter_subsection("Anisotropic friction");
-      const double       r              = prm.get_double("Strength ratio");
-      const std::string  direction_text = prm.get("First direction");
+      const double      r              = prm.get_double("Strength ratio");
+      const std::string direction_text = prm.get("First direction");
       // (A 3-D vector also in 2-D.)
       const Tensor<1, 3> d =
         Utilities::parse_vector<3>(direction_text,
@@ -415,11 +442,12 @@ namespace rupture
       const DoFHandler<dim> &dof_handler,
       const IndexSet        &locally_owned_dofs,
       const IndexSet &,
-      AffineConstraints<double>                       &constraints,
-      const std::function<double(types::material_id,
-                                 const Tensor<1, dim> &,
-                                 const Point<dim> &)> &shear_modulus_across,
-      const MPI_Comm                                   comm)
+      AffineConstraints<double> &constraints,
+      const std::function<std::array<double, 2>(types::material_id,
+                                                const Tensor<1, dim> &,
+                                                const Point<dim> &)>
+                    &shear_across,
+      const MPI_Comm comm)
     {
       communicator = comm;
       AssertThrow(dof_handler.get_fe_collection().size() == 2,
@@ -532,8 +560,13 @@ namespace rupture
               pair.area = pair.normal.norm();
               AssertThrow(pair.area > 0, ExcInternalError());
               pair.normal /= pair.area;
-              pair.shear_modulus =
-                shear_modulus_across(pair.material, pair.normal, pair.location);
+              const auto [shear_modulus, density] =
+                shear_across(pair.material, pair.normal, pair.location);
+              pair.shear_modulus = shear_modulus;
+              pair.radiation_damping =
+                radiation_damping >= 0 ?
+                  radiation_damping :
+                  0.5 * std::sqrt(density * shear_modulus);
               if (friction_ellipse.a2 != 1 &&
                   friction_ellipse.direction.norm() > 0)
                 {

@@ -101,7 +101,7 @@ namespace rupture
                                               to_3d(pair.location),
                                               dt,
                                               friction_ellipse,
-                                              radiation_damping,
+                                              pair.radiation_damping,
                                               old) :
                   return_map<dim>(delta,
                                   pair.normal,
@@ -113,7 +113,7 @@ namespace rupture
                                   *friction_law,
                                   to_3d(pair.location),
                                   dt,
-                                  radiation_damping,
+                                  pair.radiation_damping,
                                   old);
             }
           pair.trial_slip = delta - (delta * pair.normal) * pair.normal;

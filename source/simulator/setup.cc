@@ -37,8 +37,9 @@ namespace rupture
         [this](const types::material_id id,
                const Tensor<1, dim>    &normal,
                const Point<dim>        &location) {
-          return materials.at(id, location)
-            .template shear_modulus_across<dim>(normal);
+          const Material::ElasticConstants m = materials.at(id, location);
+          return std::array<double, 2>{
+            {m.template shear_modulus_across<dim>(normal), m.density}};
         },
         communicator);
     };

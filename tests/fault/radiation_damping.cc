@@ -6,8 +6,10 @@
 // SEAS benchmarks' value); every slip is that of a spring-slider with
 // damping stepped by backward Euler; it sticks and slips at the same steps
 // as without damping. eta = 0 is the run without the entry to the last
-// digit. Refused: eta > 0 with a dynamic scheme and with traction at split
-// nodes, each with a message naming the entry.
+// digit. 'auto' (half the shear impedance across the fault from the
+// material, isotropic or anisotropic) is the run with that number. Refused: eta
+// > 0 with a dynamic scheme and with traction at split nodes, each with a
+// message naming the entry.
 
 #include <deal.II/base/mpi.h>
 
@@ -106,6 +108,43 @@ main(int argc, char **argv)
                   tests::read_file("plain/statistics") ?
                 "yes" :
                 "no");
+
+  // 'auto': half the shear impedance across the fault (normal y) at each
+  // node, sqrt(rho mu_n) / 2: mu = E / (2 (1 + nu)) = 1e10 Pa for the
+  // block's isotropic rock, C66 (the shear across y along x) for an
+  // orthotropic one whose other shear constants differ.
+  const auto same_as_number = [&](const std::string              &name,
+                                  const std::vector<std::string> &material,
+                                  const double                    mu_n) {
+    const double             value = 0.5 * std::sqrt(2670 * mu_n);
+    std::vector<std::string> a = material, b = material;
+    a.insert(a.end(),
+             {"Fault/Radiation damping=auto",
+              "Time integration/Time step=0.5"});
+    char number[64];
+    std::snprintf(number, sizeof(number), "%.17g", value);
+    b.insert(b.end(),
+             {std::string("Fault/Radiation damping=") + number,
+              "Time integration/Time step=0.5"});
+    tests::run_in(name + "-auto", {prm}, a);
+    tests::run_in(name + "-number", {prm}, b);
+    std::printf("'auto' in %s rock: the run with eta = sqrt(rho mu_n) / 2 = "
+                "%.4g Pa s/m to 1e-12: %s\n",
+                name.c_str(),
+                value,
+                tests::relative_difference(
+                  tests::read_statistics(name + "-auto/statistics"),
+                  tests::read_statistics(name + "-number/statistics")) < 1e-12 ?
+                  "yes" :
+                  "no");
+  };
+  same_as_number("isotropic", {}, 1e10);
+  same_as_number("orthotropic",
+                 {"Material/Symmetry=orthotropic",
+                  "Material/Stiffness=C11 = 3e10, C22 = 2.5e10, C33 = 3e10, "
+                  "C12 = 1e10, C13 = 1e10, C23 = 1e10, C44 = 0.5e10, C55 = "
+                  "0.7e10, C66 = 2e10"},
+                 2e10);
 
   // Refused combinations.
   for (const auto &sets :

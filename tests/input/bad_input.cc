@@ -153,6 +153,10 @@ main(int argc, char **argv)
                "Plane point = 0, 500\n  set Plane normal = 0, 1\n  "
                "subsection Anisotropic friction\n    set Strength ratio = "
                "2\n    set First direction = 1, 0, 1\n  end\nend\n");
+  write("radiation_damping_text.prm",
+        base + "subsection Fault\n  set Model = penalty contact\n  set "
+               "Plane point = 0, 500\n  set Plane normal = 0, 1\n  set "
+               "Radiation damping = fast\nend\n");
   write("anisotropic_2d.prm",
         base + "subsection Material\n  set Symmetry = transversely "
                "isotropic\n  set Stiffness = C11 = 6e10, C33 = 4e10, C13 = "
@@ -319,6 +323,8 @@ main(int argc, char **argv)
   check("2-D anisotropic friction whose first direction is oblique to the "
         "model plane",
         {"anisotropic_friction_oblique_2d.prm"});
+  check("radiation damping neither a number nor auto",
+        {"radiation_damping_text.prm"});
   check("2-D anisotropic material without a mirror plane",
         {"anisotropic_2d.prm"});
   check("fault plane that cuts through cells", {"fault_plane.prm"});

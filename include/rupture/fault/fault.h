@@ -144,7 +144,10 @@ namespace rupture
        * After the DoFs are distributed: find the split node pairs and the
        * welded ones, add the welding constraints u+ = u- to
        * @p constraints (not yet closed), and compute the nodes' areas and
-       * normals.
+       * normals. @p shear_across gives, for a material at a point, its
+       * shear stiffness across a plane of normal n and its density (the
+       * pairs' shear_modulus and, with <Radiation damping> = auto, their
+       * radiation damping).
        *
        * The first set-up starts every pair from the initial state (the
        * initial traction, the friction law's initial state). A set-up
@@ -154,15 +157,15 @@ namespace rupture
        * and are counted by n_new_pairs().
        */
       void
-      setup(
-        const DoFHandler<dim>                           &dof_handler,
-        const IndexSet                                  &locally_owned_dofs,
-        const IndexSet                                  &locally_relevant_dofs,
-        AffineConstraints<double>                       &constraints,
-        const std::function<double(types::material_id,
-                                   const Tensor<1, dim> &,
-                                   const Point<dim> &)> &shear_modulus_across,
-        const MPI_Comm                                   communicator);
+      setup(const DoFHandler<dim>     &dof_handler,
+            const IndexSet            &locally_owned_dofs,
+            const IndexSet            &locally_relevant_dofs,
+            AffineConstraints<double> &constraints,
+            const std::function<std::array<double, 2>(types::material_id,
+                                                      const Tensor<1, dim> &,
+                                                      const Point<dim> &)>
+                          &shear_across,
+            const MPI_Comm communicator);
 
       /**
        * The interface of another DoFHandler on a mesh with the same sides

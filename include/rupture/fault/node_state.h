@@ -55,6 +55,10 @@ namespace rupture
       double         normal_penalty     = 0;
       double         tangential_penalty = 0;
       double         shear_modulus      = 0;
+      /// Radiation damping eta here (Pa s/m): <Fault/Radiation damping>,
+      /// or with 'auto' half the shear impedance across the fault,
+      /// sqrt(rho shear_modulus) / 2.
+      double radiation_damping = 0;
       /// Slip imposed (Fault/Forced slip) instead of friction.
       bool           forced = false;
       Tensor<1, dim> forced_direction;
