@@ -310,13 +310,36 @@ namespace rupture
           (2 * (1 + first_material_value(prm, "Poisson's ratio")));
       vertical_shear_modulus = shear_modulus;
       read_anisotropic_moduli(prm);
+      const double density = first_material_value(prm, "Density");
       prm.leave_subsection();
 
       // The friction law, the damping and the fault's outputs.
       prm.enter_subsection("Fault");
-      law               = Friction::create(prm);
-      law_name          = prm.get("Friction law");
-      radiation_damping = prm.get_double("Radiation damping");
+      law      = Friction::create(prm);
+      law_name = prm.get("Friction law");
+      {
+        // A number >= 0, or 'auto': half the shear impedance across the
+        // fault, sqrt(rho mu) / 2 with mu the modulus across it (C55 for an
+        // anisotropic material).
+        const std::string text =
+          dealii::Utilities::trim(prm.get("Radiation damping"));
+        std::istringstream in(text);
+        double             value = 0;
+        if (text == "auto")
+          value = 0.5 * std::sqrt(density * shear_modulus);
+        else
+          {
+            in >> value;
+            AssertThrow(!in.fail() && in.eof() && std::isfinite(value) &&
+                          value >= 0,
+                        ExcMessage("<Fault/Radiation damping> = '" + text +
+                                   "' is neither a number >= 0 (Pa s/m) nor "
+                                   "'auto'. Allowed: a number >= 0 or "
+                                   "'auto' (half the shear impedance across "
+                                   "the fault, from the material)."));
+          }
+        radiation_damping = value;
+      }
       AssertThrow(law->has_state_rate(),
                   ExcMessage("<Fault/Friction law> = " + law_name +
                              " gives no rate of change of its state, which "

@@ -122,5 +122,20 @@ main(int argc, char **argv)
                   summary.find("\"ended early\"") != std::string::npos ?
                 "yes" :
                 "no");
+
+  // <Fault/Radiation damping> = auto: half the shear impedance, sqrt(rho
+  // mu) / 2 = 2.5e6 Pa s/m for rho = 2500 kg/m^3 and mu = 1e10 Pa.
+  for (const std::string eta : {"auto", "2.5e6"})
+    tests::run_in("eta-" + eta,
+                  {std::string(SOURCE_DIR) + "/inputs/spring_slider.prm"},
+                  {"Termination/Number of events=2",
+                   "Fault/Radiation damping=" + eta});
+  std::printf("  radiation damping 'auto' is the run with sqrt(rho mu) / 2 = "
+              "2.5e6 Pa s/m: %s\n",
+              tests::read_file("eta-auto/events.csv") ==
+                    tests::read_file("eta-2.5e6/events.csv") &&
+                  !tests::read_file("eta-auto/events.csv").empty() ?
+                "yes" :
+                "no");
   return 0;
 }
