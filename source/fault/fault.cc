@@ -201,9 +201,9 @@ namespace rupture
             "friction law sees the slip measured as |A slip|. 1 (the "
             "default) is isotropic friction. In 2-D (plane strain) the fault's "
             "one shear direction must be an axis: <First direction> in the "
-            "model plane (the in-plane slip sees the strength S, as "
-            "isotropic friction) or normal to it (0, 0, 1: strength r S, "
-            "slip measured r |slip|). Every fault model and friction "
+            "model plane and not normal to the fault (the in-plane slip "
+            "sees the strength S, as isotropic friction) or normal to the "
+            "plane (0, 0, 1: strength r S, slip measured r |slip|). Every fault model and friction "
             "law; a law of the slip rate sees the slip rate |A V|, and "
             "radiation damping acts on the slip rate as a vector.");
           prm.declare_entry("First direction",

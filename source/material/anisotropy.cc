@@ -477,22 +477,18 @@ namespace rupture
     double
     LargestRatio::add(const VoigtMatrix &c, const double w)
     {
-      double value;
-      if (has_last && c == last)
-        value = last_ratio * w;
-      else if (largest_value > 0 &&
-               ratio->certainly_below(c, largest_value / w * (1 - 1e-10)))
-        return -1;
-      else
+      if (!(has_last && c == last))
         {
+          if (largest_value > 0 &&
+              ratio->certainly_below(c, largest_value / w * (1 - 1e-10)))
+            return -1;
           last       = c;
           last_ratio = (*ratio)(c);
           ++solves;
-          has_last   = true;
-          value      = last_ratio * w;
+          has_last = true;
         }
-      largest_value = std::max(largest_value, value);
-      return value;
+      largest_value = std::max(largest_value, last_ratio * w);
+      return last_ratio;
     }
 
 

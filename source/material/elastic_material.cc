@@ -846,11 +846,12 @@ namespace rupture
               if (!largest[id])
                 largest[id] =
                   std::make_unique<LargestRatio>(tensors.energy_ratio(id));
-              const double raised = largest[id]->add(c, s / r);
-              if (raised < 0)
+              // (The speed as before the certificate: ratio s / r.)
+              const double ratio = largest[id]->add(c, s / r);
+              if (ratio < 0)
                 continue;
               const double v =
-                std::sqrt(raised) *
+                std::sqrt(ratio * s / r) *
                 materials[id].template wave_speeds<dim_>().fastest;
               if (v <= speed_of_light)
                 {

@@ -32,7 +32,9 @@ namespace tests
           constraints,
           [mu](const dealii::types::material_id,
                const dealii::Tensor<1, dim> &,
-               const dealii::Point<dim> &) { return mu; },
+               const dealii::Point<dim> &) {
+            return std::array<double, 2>{{mu, 2670.}};
+          },
           MPI_COMM_WORLD);
       },
       boundary_conditions);

@@ -94,7 +94,9 @@ namespace tests
         constraints,
         [](const types::material_id,
            const Tensor<1, dim> &,
-           const Point<dim> &) { return 3e10; },
+           const Point<dim> &) {
+          return std::array<double, 2>{{3e10, 2670.}};
+        },
         MPI_COMM_WORLD);
       constraints.close();
     }

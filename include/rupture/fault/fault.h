@@ -284,7 +284,9 @@ namespace rupture
         return anisotropic_friction;
       }
 
-      /// <Fault/Radiation damping> (Pa s/m; 0: none).
+      /// <Fault/Radiation damping> (Pa s/m; 0: none; -1: 'auto', half the
+      /// shear impedance across the fault at each pair,
+      /// PairData::radiation_damping).
       double
       radiation_damping_coefficient() const
       {

@@ -172,8 +172,9 @@ namespace rupture
     public:
       explicit LargestRatio(const EnergyRatio &ratio);
 
-      /// Takes @p c with weight @p w: ratio(c) w where it was computed (or
-      /// repeated from the last tensor), -1 where it was passed over.
+      /// Takes @p c with weight @p w: ratio(c) (not times w) where it was
+      /// computed (or repeated from the last tensor), -1 where it was
+      /// passed over because ratio(c) w is below the largest so far.
       double
       add(const VoigtMatrix &c, const double w);
 
@@ -193,7 +194,7 @@ namespace rupture
 
     private:
       const EnergyRatio *ratio;
-      unsigned int       solves = 0;
+      unsigned int       solves        = 0;
       double             largest_value = 0;
       bool               has_last      = false;
       VoigtMatrix        last{};
