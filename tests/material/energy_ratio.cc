@@ -122,7 +122,7 @@ main()
       const VoigtMatrix c0 = random_tensor(state), dc = random_tensor(state);
       const EnergyRatio ratio(reference, dim);
       LargestRatio      largest(ratio);
-      double            exact = 0;
+      double            exact    = 0;
       unsigned int      computed = 0, passed = 0;
       for (unsigned int k = 0; k < 1000; ++k)
         {
