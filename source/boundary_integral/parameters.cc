@@ -5,6 +5,7 @@
 #include <rupture/boundary_integral/simulation.h>
 #include <rupture/boundary_integral/stiffness.h>
 #include <rupture/boundary_integral/text.h>
+#include <rupture/fault/radiation_damping.h>
 #include <rupture/material/anisotropic_input.h>
 
 #include <deal.II/base/function_parser.h>
@@ -317,29 +318,12 @@ namespace rupture
       prm.enter_subsection("Fault");
       law      = Friction::create(prm);
       law_name = prm.get("Friction law");
-      {
-        // A number >= 0, or 'auto': half the shear impedance across the
-        // fault, sqrt(rho mu) / 2 with mu the modulus across it (C55 for an
-        // anisotropic material).
-        const std::string text =
-          dealii::Utilities::trim(prm.get("Radiation damping"));
-        std::istringstream in(text);
-        double             value = 0;
-        if (text == "auto")
-          value = 0.5 * std::sqrt(density * shear_modulus);
-        else
-          {
-            in >> value;
-            AssertThrow(!in.fail() && in.eof() && std::isfinite(value) &&
-                          value >= 0,
-                        ExcMessage("<Fault/Radiation damping> = '" + text +
-                                   "' is neither a number >= 0 (Pa s/m) nor "
-                                   "'auto'. Allowed: a number >= 0 or "
-                                   "'auto' (half the shear impedance across "
-                                   "the fault, from the material)."));
-          }
-        radiation_damping = value;
-      }
+      // 'auto': sqrt(rho mu) / 2 with mu the modulus across the fault (C55
+      // for an anisotropic material).
+      radiation_damping =
+        Fault::read_radiation_damping(prm.get("Radiation damping"));
+      if (radiation_damping < 0)
+        radiation_damping = 0.5 * std::sqrt(density * shear_modulus);
       AssertThrow(law->has_state_rate(),
                   ExcMessage("<Fault/Friction law> = " + law_name +
                              " gives no rate of change of its state, which "

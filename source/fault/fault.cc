@@ -1,6 +1,7 @@
 #include <rupture/base/utilities.h>
 #include <rupture/fault/fault.h>
 #include <rupture/fault/location_index.h>
+#include <rupture/fault/radiation_damping.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -26,6 +27,26 @@ namespace rupture
 {
   namespace Fault
   {
+    double
+    read_radiation_damping(const std::string &entry)
+    {
+      const std::string text = dealii::Utilities::trim(entry);
+      if (text == "auto")
+        return -1;
+      std::istringstream in(text);
+      double             value = 0;
+      in >> value;
+      AssertThrow(!in.fail() && in.eof() && std::isfinite(value) && value >= 0,
+                  ExcMessage("<Fault/Radiation damping> = '" + text +
+                             "' is neither a number >= 0 (Pa s/m) nor "
+                             "'auto'. Allowed: a number >= 0 or 'auto' (half "
+                             "the shear impedance across the fault, from the "
+                             "material)."));
+      return value;
+    }
+
+
+
     template <int dim>
     void
     Fault<dim>::declare_parameters(ParameterHandler &prm)
@@ -266,28 +287,9 @@ namespace rupture
       fault->centred_split_node =
         (prm.get("Split-node friction time") == "centred");
       fault->centred_penalty = (prm.get("Penalty friction time") == "centred");
-      {
-        // A number >= 0, or 'auto' (stored as -1): half the shear
-        // impedance across the fault at each node.
-        const std::string text =
-          dealii::Utilities::trim(prm.get("Radiation damping"));
-        double value = 0;
-        if (text == "auto")
-          fault->radiation_damping = -1;
-        else
-          {
-            std::istringstream in(text);
-            in >> value;
-            AssertThrow(!in.fail() && in.eof() && std::isfinite(value) &&
-                          value >= 0,
-                        ExcMessage("<Fault/Radiation damping> = '" + text +
-                                   "' is neither a number >= 0 (Pa s/m) nor "
-                                   "'auto'. Allowed: a number >= 0 or "
-                                   "'auto' (half the shear impedance across "
-                                   "the fault, from the material)."));
-            fault->radiation_damping = value;
-          }
-      }
+      // (-1: 'auto', half the shear impedance across the fault per pair.)
+      fault->radiation_damping =
+        read_radiation_damping(prm.get("Radiation damping"));
       AssertThrow(!fault->split_node_method || fault->radiation_damping == 0,
                   ExcMessage("<Fault/Radiation damping> = " +
                              prm.get("Radiation damping") +
