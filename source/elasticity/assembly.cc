@@ -33,6 +33,10 @@ namespace rupture
     System<dim>::assemble()
     {
       TimerOutput::Scope t(timer, "Assemble matrices");
+      if (has_absorbing())
+        absorbing_blocks.reinit(dim,
+                                discretization.locally_owned_dofs(),
+                                communicator);
       using Scheme            = TimeIntegration::Scheme;
       const Scheme run_scheme = time_parameters.scheme;
 
@@ -74,6 +78,7 @@ namespace rupture
 
       FullMatrix<double>                   k, mass;
       Vector<double>                       lumped, absorbing, load;
+      std::array<Vector<double>, dim - 1>  coupling;
       std::vector<types::global_dof_index> dofs;
       std::vector<unsigned int>            component;
 
@@ -198,18 +203,20 @@ namespace rupture
                               id) != boundary_conditions.absorbing.end())
                   {
                     // Lysmer-Kuhlemeyer dashpots, lumped to the nodes: the
-                    // diagonal of the impedance sqrt(rho Gamma(n)) (normal
-                    // part rho vp, tangential part rho vs if isotropic).
-                    // Exact for isotropic materials on faces normal to a
-                    // coordinate axis; elsewhere the coupling between
-                    // components is dropped.
+                    // impedance Z = sqrt(rho Gamma(n)) per node (rho vp n n
+                    // + rho vs (I - n n) if isotropic). Its diagonal goes
+                    // to the vector, the rest couples a node's components
+                    // (absorbing_blocks: entry k of DoF i couples it with
+                    // the node's component k + 1 places further).
                     hp_faces.reinit(cell, f);
                     const FEFaceValues<dim> &fv =
                       hp_faces.get_present_fe_values();
                     absorbing.reinit(n);
+                    for (auto &c : coupling)
+                      c.reinit(n);
                     for (const unsigned int q : fv.quadrature_point_indices())
                       {
-                        const Tensor<1, dim> z =
+                        const SymmetricTensor<2, dim> z =
                           varying ?
                             materials
                               .at(cell->material_id(), fv.quadrature_point(q))
@@ -224,11 +231,19 @@ namespace rupture
                                 .system_to_component_index(i)
                                 .first %
                               dim;
-                            absorbing(i) += z[c] *
+                            const double w =
+                              fv[u].value(i, q).norm_square() * fv.JxW(q);
+                            absorbing(i) += z[c][c] *
                                             fv[u].value(i, q).norm_square() *
                                             fv.JxW(q);
+                            for (unsigned int k = 0; k + 1 < dim; ++k)
+                              coupling[k](i) += z[c][(c + k + 1) % dim] * w;
                           }
                       }
+                    for (unsigned int k = 0; k + 1 < dim; ++k)
+                      discretization.hanging_constraints()
+                        .distribute_local_to_global(
+                          coupling[k], dofs, absorbing_blocks.coefficients(k));
                     discretization.hanging_constraints()
                       .distribute_local_to_global(absorbing,
                                                   dofs,
@@ -247,7 +262,59 @@ namespace rupture
       if (use_lumped_mass)
         lumped_mass_vector.compress(VectorOperation::add);
       if (has_absorbing())
-        absorbing_vector.compress(VectorOperation::add);
+        {
+          absorbing_vector.compress(VectorOperation::add);
+          set_absorbing_siblings();
+          absorbing_blocks.finalize(absorbing_vector);
+        }
+    }
+
+
+
+    template <int dim>
+    void
+    System<dim>::set_absorbing_siblings()
+    {
+      // Every owned DoF of a cell with an absorbing face, ghost cells
+      // included (a node's coefficients may come from another process's
+      // faces).
+      std::vector<types::global_dof_index> dofs;
+      const IndexSet &owned = discretization.locally_owned_dofs();
+      const auto     &ids   = boundary_conditions.absorbing;
+      for (const auto &cell :
+           discretization.dof_handler().active_cell_iterators())
+        {
+          if (cell->is_artificial() || !cell->at_boundary())
+            continue;
+          bool absorbing_face = false;
+          for (const auto f : cell->face_indices())
+            absorbing_face =
+              absorbing_face ||
+              (cell->face(f)->at_boundary() &&
+               std::find(ids.begin(),
+                         ids.end(),
+                         cell->face(f)->boundary_id()) != ids.end());
+          if (!absorbing_face)
+            continue;
+          const FiniteElement<dim> &fe    = cell->get_fe();
+          const unsigned int        first = cell->active_fe_index() * dim;
+          dofs.resize(fe.n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              const auto [component, index] = fe.system_to_component_index(i);
+              if (component < first || component >= first + dim ||
+                  !owned.is_element(dofs[i]))
+                continue;
+              const unsigned int c = component - first;
+              for (unsigned int k = 0; k + 1 < dim; ++k)
+                absorbing_blocks.set_sibling(
+                  dofs[i],
+                  k,
+                  dofs[fe.component_to_system_index(first + (c + k + 1) % dim,
+                                                    index)]);
+            }
+        }
     }
 
 
@@ -314,6 +381,10 @@ namespace rupture
               }
           system_matrix.compress(VectorOperation::add);
         }
+      if (absorbing_factor != 0 && has_absorbing() && !absorbing_blocks.empty())
+        absorbing_blocks.add_to(system_matrix,
+                                absorbing_factor,
+                                discretization.increment_constraints());
 
       max_system_diagonal = 0;
       for (const auto i : discretization.locally_owned_dofs())

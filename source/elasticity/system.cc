@@ -449,6 +449,7 @@ namespace rupture
           const double *a = absorbing_vector.trilinos_vector()[0];
           for (unsigned int i = 0; i < n; ++i)
             ys[i] += c.absorbing * a[i] * xs[i];
+          absorbing_blocks.vmult_add(c.absorbing, xs, ys);
         }
       if (c.absorbing != 0 && fault_zone_viscosity() != 0)
         fault_zone->vmult_add(c.absorbing * fault_zone_viscosity(),
@@ -599,6 +600,7 @@ namespace rupture
         {
           tmp = v;
           tmp.scale(absorbing_vector);
+          absorbing_blocks.vmult_add(1., v, tmp);
           y += tmp;
         }
       // Constrained DoFs have placeholder rows in M and K.
@@ -613,6 +615,7 @@ namespace rupture
     {
       y = v;
       y.scale(absorbing_vector);
+      absorbing_blocks.vmult_add(1., v, y);
       discretization.hanging_constraints().set_zero(y);
     }
 

@@ -115,16 +115,20 @@ namespace rupture
 
 
     template <int dim>
-    Tensor<1, dim>
+    SymmetricTensor<2, dim>
     ElasticConstants::boundary_impedance(const Tensor<1, dim> &n) const
     {
-      Tensor<1, dim> z;
+      SymmetricTensor<2, dim> z;
       if (isotropic())
         {
           const double zp = density * p_wave_speed();
           const double zs = density * s_wave_speed();
           for (unsigned int c = 0; c < dim; ++c)
-            z[c] = zp * n[c] * n[c] + zs * (1 - n[c] * n[c]);
+            {
+              z[c][c] = zp * n[c] * n[c] + zs * (1 - n[c] * n[c]);
+              for (unsigned int k = c + 1; k < dim; ++k)
+                z[c][k] = (zp - zs) * n[c] * n[k];
+            }
           return z;
         }
       // sqrt(rho Gamma) from the eigenpairs of Gamma.
@@ -134,7 +138,11 @@ namespace rupture
         {
           const double root = std::sqrt(density * std::max(value, 0.));
           for (unsigned int c = 0; c < dim; ++c)
-            z[c] += root * vector[c] * vector[c];
+            {
+              z[c][c] += root * vector[c] * vector[c];
+              for (unsigned int k = c + 1; k < dim; ++k)
+                z[c][k] += root * vector[c] * vector[k];
+            }
         }
       return z;
     }
@@ -1051,7 +1059,7 @@ namespace rupture
     const SymmetricTensor<2, dim> &) const;                                    \
   template double ElasticConstants::shear_modulus_across<dim>(                 \
     const Tensor<1, dim> &) const;                                             \
-  template Tensor<1, dim> ElasticConstants::boundary_impedance<dim>(           \
+  template SymmetricTensor<2, dim> ElasticConstants::boundary_impedance<dim>(  \
     const Tensor<1, dim> &) const;
     RUPTURE_INSTANTIATE(2)
     RUPTURE_INSTANTIATE(3)

@@ -50,8 +50,10 @@ namespace rupture
           "",
           Patterns::Anything(),
           "Comma separated names of boundaries with Lysmer-Kuhlemeyer "
-          "dashpots (normal impedance rho*vp, tangential rho*vs) that let "
-          "outgoing waves leave a truncated domain. Dynamic schemes only.");
+          "dashpots (normal impedance rho*vp, tangential rho*vs; in "
+          "anisotropic rock the matrix sqrt(rho Gamma(n)) of the boundary's "
+          "normal n, Gamma the Christoffel matrix) that let outgoing waves "
+          "leave a truncated domain. Dynamic schemes only.");
       }
       prm.leave_subsection();
     }

@@ -38,7 +38,8 @@ namespace rupture
                             &stiffness_force,
                             &residual,
                             &fault_force,
-                            &zone_force})
+                            &zone_force,
+                            &coupling_force})
         v->reinit(owned_dofs, s.kinematics.communicator());
       dof_kind.assign(owned_dofs.n_elements(), DofKind::free);
       unsigned int k = 0;
@@ -94,6 +95,13 @@ namespace rupture
       fault_entries.clear();
       if (s.fault)
         fault_entries = s.fault->split_node_entries();
+      absorbing_blocks = Operators::NodeBlockInverse();
+      if (const Operators::NodeCoupling *coupling =
+            s.system.absorbing_coupling())
+        absorbing_blocks =
+          coupling->invert_blocks(inverse_diagonal.trilinos_vector()[0],
+                                  g,
+                                  fault_entries);
     }
 
 
@@ -125,8 +133,9 @@ namespace rupture
       const VectorType   *absorbing_damping = s.system.absorbing_damping();
       const double *const c_abs =
         absorbing_damping ? local(*absorbing_damping) : nullptr;
-      const double *const f     = local(load);
-      const double *const inv_d = local(inverse_diagonal);
+      const Operators::NodeCoupling *coupling = s.system.absorbing_coupling();
+      const double *const            f        = local(load);
+      const double *const            inv_d    = local(inverse_diagonal);
 
       // Predictors: u = u + dt v + dt^2/2 a, v~ = v + (1 - gamma) dt a.
       for (unsigned int i = 0; i < n; ++i)
@@ -165,6 +174,8 @@ namespace rupture
       for (unsigned int i = 0; i < n; ++i)
         r[i] =
           f[i] - ku[i] - alpha * m[i] * v[i] - (c_abs ? c_abs[i] * v[i] : 0.);
+      if (coupling)
+        coupling->vmult_add(-1., v, r);
       if (eta != 0)
         s.system.add_fault_zone_force(-eta, s.state.velocity, residual);
       // The fault's force, nonzero only at its entries: r - F_fault there.
@@ -185,10 +196,21 @@ namespace rupture
           for (const unsigned int i : fault_entries)
             r[i] -= ff[i];
         }
-      for (unsigned int i = 0; i < n; ++i)
+      if (absorbing_blocks.size() == 0)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            a[i] = r[i] * inv_d[i];
+            v[i] += gamma * dt * a[i];
+          }
+      else
         {
-          a[i] = r[i] * inv_d[i];
-          v[i] += gamma * dt * a[i];
+          // The nodes whose dashpots couple their components solve their
+          // blocks.
+          for (unsigned int i = 0; i < n; ++i)
+            a[i] = r[i] * inv_d[i];
+          absorbing_blocks.solve(r, a);
+          for (unsigned int i = 0; i < n; ++i)
+            v[i] += gamma * dt * a[i];
         }
       s.kinematics.distribute_hanging(s.state.acceleration);
       s.kinematics.distribute_hanging(s.state.velocity);
@@ -215,6 +237,12 @@ namespace rupture
       double *const absorbing =
         absorbing_damping ? local(s.energy.absorbing_force) : nullptr;
       double *const contact = local(s.energy.contact_force);
+      double *const coupled = coupling ? local(coupling_force) : nullptr;
+      if (coupling)
+        {
+          coupling_force = 0;
+          coupling->vmult_add(1., v, coupled);
+        }
       // work of the loads, damping, absorbing boundaries, fault; strain and
       // kinetic energy (the fault's work at its entries only, where its
       // force is nonzero, in the same order)
@@ -226,7 +254,8 @@ namespace rupture
           const double increment = u[i] - u0[i];
           const double c = alpha * m[i] * v[i] + (kv ? beta * kv[i] : 0.) +
                            (zone ? zone[i] : 0.) +
-                           (c_abs ? c_abs[i] * v[i] : 0.);
+                           (c_abs ? c_abs[i] * v[i] : 0.) +
+                           (coupled ? coupled[i] : 0.);
           // Loads on free DoFs, reactions on kinematically held ones.
           const double force = (dof_kind[i] == DofKind::kinematic) ?
                                  ku[i] + m[i] * a[i] + c + ff[i] :
@@ -237,7 +266,7 @@ namespace rupture
           damping[i] = c;
           if (absorbing)
             {
-              const double fa = c_abs[i] * v[i];
+              const double fa = c_abs[i] * v[i] + (coupled ? coupled[i] : 0.);
               sums[2] += (fa + absorbing[i]) * increment;
               absorbing[i] = fa;
             }

@@ -6,12 +6,15 @@
 // 10 cm); with the friction ellipse twice as strong along dip (ratio 2)
 // the slip turns towards strike, along the ellipse's normal at a traction
 // 30 degrees from strike, atan(tan(30) / 4) = 8.2 degrees. With r = 2 the
-// centre station's directions file follows the sliding rule too.
+// centre station's directions file follows the sliding rule too, and the
+// surface field slip_traction_angle is the angle between the surface's
+// slip velocity and shear traction.
 
 #include <deal.II/base/mpi.h>
 
 #include "../tests.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -31,7 +34,7 @@ main(int argc, char **argv)
       tests::run_in(out,
                     {prm},
                     {"Fault/Anisotropic friction/Strength ratio=" + ratio,
-                     "Fault/Output/Output interval=1.2"});
+                     "Fault/Output/Output interval=0.6"});
       const std::string vtu  = tests::read_file(out + "/fault/fault_00060.vtu");
       const auto        rake = tests::vtu_field(vtu, "rake");
       const auto        slip = tests::vtu_field(vtu, "slip");
@@ -55,6 +58,59 @@ main(int argc, char **argv)
                   ratio == "1" ? "25-35 (the prestress at 30)" :
                                  "5-12 (the ellipse's normal, 8.2)",
                   expected ? "yes" : "no");
+      // The surface field slip_traction_angle at 0.6 s, while the fault
+      // slides: at every node whose slip rate exceeds 1 mm/s, the angle
+      // between the fields slip_velocity and shear_traction (to 0.01
+      // degrees). Its median over the nodes sliding faster than 0.1 m/s:
+      // small with isotropic friction (the slip follows the traction), the
+      // turn of the sliding rule with r = 2 (from the traction's 30 degrees
+      // towards the normal's 8; a few arresting nodes slide against the
+      // traction, hence the median).
+      {
+        const std::string mid =
+          tests::read_file(out + "/fault/fault_00030.vtu");
+        const auto angle = tests::vtu_field(mid, "slip_traction_angle");
+        const auto v     = tests::vtu_field(mid, "slip_velocity");
+        const auto tau   = tests::vtu_field(mid, "shear_traction");
+        double     error = 0;
+        std::vector<double> fast;
+        for (unsigned int i = 0;
+             i < angle.size() && 3 * i + 2 < v.size() && 3 * i + 2 < tau.size();
+             ++i)
+          {
+            const double vv = std::sqrt(v[3 * i] * v[3 * i] +
+                                        v[3 * i + 1] * v[3 * i + 1] +
+                                        v[3 * i + 2] * v[3 * i + 2]),
+                         tt = std::sqrt(tau[3 * i] * tau[3 * i] +
+                                        tau[3 * i + 1] * tau[3 * i + 1] +
+                                        tau[3 * i + 2] * tau[3 * i + 2]);
+            if (!(vv > 1e-3 && tt > 0))
+              continue;
+            const double dot = v[3 * i] * tau[3 * i] +
+                               v[3 * i + 1] * tau[3 * i + 1] +
+                               v[3 * i + 2] * tau[3 * i + 2];
+            const double expected =
+              std::acos(std::max(-1., std::min(1., dot / (vv * tt)))) * 180 /
+              M_PI;
+            error = std::max(error, std::abs(angle[i] - expected));
+            if (vv > 0.1)
+              fast.push_back(angle[i]);
+          }
+        std::sort(fast.begin(), fast.end());
+        const double median = fast.empty() ? -1 : fast[fast.size() / 2];
+        std::printf(
+          "strength ratio %s at 0.6 s: field slip_traction_angle equal to "
+          "the angle between slip_velocity and shear_traction within 0.01 "
+          "degrees: %s; %s nodes sliding faster than 0.1 m/s, their median "
+          "angle %s\n",
+          ratio.c_str(),
+          error <= 0.01 ? "yes" : "no",
+          fast.size() >= 10 ? "10 or more" : "fewer than 10",
+          ratio == "1" ?
+            (median >= 0 && median < 5 ? "below 5 degrees" : "NOT below 5") :
+            (median > 15 && median < 35 ? "between 15 and 35 degrees" :
+                                          "NOT between 15 and 35"));
+      }
       // The station directions (<name>-rake.dat: t, rake of the slip,
       // direction of the frictional slip rate, direction of the shear
       // traction, angle between the two), written with anisotropic

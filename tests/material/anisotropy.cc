@@ -146,18 +146,58 @@ main(int argc, char **argv)
     // Normal along the axis: shear stiffness C44; impedance
     // rho (vs, vs, vp) with vs = sqrt(C44/rho), vp = sqrt(C33/rho).
     Tensor<1, 3> z;
-    z[2]                  = 1;
-    const Tensor<1, 3> zi = c.boundary_impedance<3>(z);
+    z[2]                           = 1;
+    const SymmetricTensor<2, 3> zi = c.boundary_impedance<3>(z);
     std::cout << "across the plane normal to the axis: shear modulus "
               << c.shear_modulus_across<3>(z) << " (C44 " << c44
-              << "), impedance " << zi << " (expected " << std::sqrt(rho * c44)
-              << " " << std::sqrt(rho * c44) << " " << std::sqrt(rho * c33)
-              << ")" << std::endl;
+              << "), impedance " << zi[0][0] << " " << zi[1][1] << " "
+              << zi[2][2] << ", off the diagonal below 1e-12 of it: "
+              << (std::abs(zi[0][1]) + std::abs(zi[0][2]) + std::abs(zi[1][2]) <
+                      1e-12 * zi.norm() ?
+                    "yes" :
+                    "no")
+              << " (expected " << std::sqrt(rho * c44) << " "
+              << std::sqrt(rho * c44) << " " << std::sqrt(rho * c33) << ")"
+              << std::endl;
     Tensor<1, 3> x;
     x[0] = 1;
     std::cout << "across the plane normal to x: shear modulus "
               << c.shear_modulus_across<3>(x) << " (mean of C66 and C44 "
               << 0.5 * (c66 + c44) << ")" << std::endl;
+
+    // A boundary oblique to the axis: Z = sqrt(rho Gamma(n)) is a full
+    // matrix, Z Z = rho Gamma, and Z p = rho c p for each plane wave that
+    // leaves along n (c its phase speed, p its polarization).
+    for (const double degrees : {30., 70.})
+      {
+        const double theta = degrees * M_PI / 180;
+        Tensor<1, 3> n;
+        n[0]                            = std::sin(theta);
+        n[1]                            = 0.3;
+        n[2]                            = std::cos(theta);
+        n                               = n / n.norm();
+        const SymmetricTensor<2, 3> zn  = c.boundary_impedance<3>(n);
+        const SymmetricTensor<2, 3> g   = christoffel_matrix(c.voigt, n);
+        const double                off = std::abs(zn[0][2]) / zn[0][0];
+        const double                root =
+          (Tensor<2, 3>(zn) * Tensor<2, 3>(zn) - Tensor<2, 3>(rho * g)).norm() /
+          (rho * g).norm();
+        const auto speeds = phase_speeds(c.voigt, rho, n);
+        const auto pairs  = eigenvectors(g);
+        double     worst  = 0;
+        for (unsigned int k = 0; k < 3; ++k)
+          worst = std::max(
+            worst,
+            (zn * pairs[k].second - rho * speeds[k] * pairs[k].second).norm() /
+              (rho * speeds[k]));
+        std::cout << "oblique boundary, " << degrees
+                  << " degrees from the axis: |Z_xz| / Z_xx = " << off
+                  << " (nonzero: " << (off > 1e-3 ? "yes" : "no")
+                  << "), Z Z = rho Gamma within 1e-12: "
+                  << (root < 1e-12 ? "yes" : "no")
+                  << ", Z p = rho c p for qP, qS1, qS2 within 1e-12: "
+                  << (worst < 1e-12 ? "yes" : "no") << std::endl;
+      }
   }
 
   // The same medium with its axis along x (three numbers), and along x

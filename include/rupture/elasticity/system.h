@@ -2,6 +2,7 @@
 #define rupture_elasticity_system_h
 
 #include <rupture/operators/elastic_system.h>
+#include <rupture/operators/node_coupling.h>
 #include <rupture/time_integration/newmark.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -187,6 +188,14 @@ namespace rupture
       {
         return has_absorbing() ? &absorbing_vector : nullptr;
       }
+
+      const Operators::NodeCoupling *
+      absorbing_coupling() const override
+      {
+        return (has_absorbing() && !absorbing_blocks.empty()) ?
+                 &absorbing_blocks :
+                 nullptr;
+      }
       double
       rayleigh_alpha() const override
       {
@@ -282,6 +291,10 @@ namespace rupture
       }
       bool
       has_absorbing() const;
+      /// Name each owned DoF's siblings (the other components of its node)
+      /// to absorbing_blocks, at cells with an absorbing face.
+      void
+      set_absorbing_siblings();
       bool
       has_body_force() const
       {
@@ -361,7 +374,11 @@ namespace rupture
       std::vector<std::vector<double>> null_space;
       VectorType                       lumped_mass_vector;
       VectorType                       absorbing_vector;
-      Factors                          system_factors;
+      /// The absorbing dashpots' coupling of a node's components (the
+      /// off-diagonal part of sqrt(rho Gamma(n)); empty on faces normal to
+      /// an axis of the material's symmetry).
+      Operators::NodeCoupling absorbing_blocks;
+      Factors                 system_factors;
       /// Without a stored system matrix (Solver::LinearSolver::
       /// matrix_free()): the diagonals of K and of the consistent M, that
       /// of the effective stiffness, and 1 at free DoFs, 0 at those the

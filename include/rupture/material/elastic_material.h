@@ -92,12 +92,15 @@ namespace rupture
       shear_modulus_across(const Tensor<1, dim> &n) const;
 
       /**
-       * The diagonal of the impedance matrix sqrt(rho Gamma(n)) of a
-       * boundary of unit normal @p n: the dashpot of each displacement
-       * component (rho vp n_c^2 + rho vs (1 - n_c^2) if isotropic).
+       * The impedance matrix Z = sqrt(rho Gamma(n)) of a boundary of unit
+       * normal @p n (Gamma the Christoffel matrix): the traction Z v that
+       * absorbs a plane wave leaving along n, whatever its polarization
+       * (rho vp n n + rho vs (I - n n) if isotropic). Its off-diagonal
+       * entries couple the components where n is not an axis of the
+       * material's symmetry.
        */
       template <int dim>
-      Tensor<1, dim>
+      SymmetricTensor<2, dim>
       boundary_impedance(const Tensor<1, dim> &n) const;
     };
 

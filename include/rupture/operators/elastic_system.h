@@ -7,6 +7,8 @@ namespace rupture
 {
   namespace Operators
   {
+    class NodeCoupling;
+
     /**
      * The elastic body as a time integrator sees it: products with the
      * stiffness K and the mass M, the damping forces (Rayleigh, the fault
@@ -60,6 +62,10 @@ namespace rupture
       /// The absorbing boundaries' diagonal dashpots; nullptr without them.
       virtual const VectorType *
       absorbing_damping() const = 0;
+      /// The coupling of a node's components by the absorbing dashpots
+      /// (their off-diagonal part); nullptr without it.
+      virtual const NodeCoupling *
+      absorbing_coupling() const = 0;
       /// Rayleigh damping C = alpha M + beta K.
       virtual double
       rayleigh_alpha() const = 0;

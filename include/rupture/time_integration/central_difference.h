@@ -1,6 +1,7 @@
 #ifndef rupture_time_integration_central_difference_h
 #define rupture_time_integration_central_difference_h
 
+#include <rupture/operators/node_coupling.h>
 #include <rupture/time_integration/interface.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -15,7 +16,9 @@ namespace rupture
      * Explicit central differences: Newmark with beta = 0, gamma = 1/2 and
      * the lumped mass, so that a step needs no solve. With absorbing
      * boundaries and mass-proportional damping the step solves the
-     * diagonal system (M (1 + gamma dt alpha) + gamma dt C_abs) a = r; the
+     * system (M (1 + gamma dt alpha) + gamma dt C_abs) a = r, diagonal
+     * but for the blocks by which the dashpots couple a node's components
+     * where the boundary is oblique to the material's axes; the
      * split-node fault adds its forces to r at its own entries only. One
      * fused pass over the owned entries does the predictors, another the
      * correctors and the energy budget.
@@ -42,6 +45,12 @@ namespace rupture
       VectorType old_displacement, stiffness_force, residual, fault_force;
       /// eta K_zone v at the end of the step (the fault zone's damping).
       VectorType zone_force;
+      /// The absorbing dashpots' coupling force at the end of the step.
+      VectorType coupling_force;
+      /// The inverses of the nodes' blocks M (1 + gamma dt alpha) +
+      /// gamma dt C_abs where the dashpots couple a node's components
+      /// (not at the fault's entries, whose force assumes the diagonal).
+      Operators::NodeBlockInverse absorbing_blocks;
       /// The owned entries the split-node fault force touches.
       std::vector<unsigned int> fault_entries;
       /// What each locally owned DoF is, for the energy budget.
