@@ -17,6 +17,10 @@ def test_prestress_keeps_the_ellipse_norm(script):
     assert "set First direction = 0, 0, 1\n" in text
     assert ("%.15g" % study.prestress_scale(2.0)) in text
     assert "Number of cells = 36, 8, 36" in text
+    assert "Time step = 0.01\n" in text
+    finer = study.input_text(2.0, "0, 0, 1", refine=2)
+    assert "Number of cells = 144, 32, 144" in finer
+    assert "Time step = 0.0025\n" in finer
     assert "Number of cells = 18, 4, 18" in study.input_text(2, "1, 0, 0", True)
 
 
