@@ -6,8 +6,10 @@
 // compression modes, and pieces of at most 7 VTK cells (whole mesh cells,
 // at least one). The displacement is linear (A x, plus a constant c on the
 // far side of the split), so every point must carry exactly that value,
-// every cell the stress C : sym(A), and the points of a piece must be
-// shared by its cells: one point per node and side of the split.
+// every cell the stress C : sym(A) (on even cycles in transversely
+// isotropic rock with an oblique axis, C from its rotated Voigt matrix),
+// and the points of a piece must be shared by its cells: one point per
+// node and side of the split.
 
 #include <rupture/material/elastic_material.h>
 #include <rupture/output/directory.h>
@@ -199,21 +201,53 @@ namespace
     u_ghost = u;
     v_ghost = v;
 
-    ParameterHandler prm;
+    // Even cycles: transversely isotropic rock with an oblique axis (in
+    // the model plane in 2-D, which keeps it a mirror plane), whose stress
+    // is computed here from the rotated Voigt matrix.
+    const bool        anisotropic = (cycle % 2 == 0);
+    const std::string axes        = (dim == 2) ? "1, 2, 0" : "1, 2, 3";
+    ParameterHandler  prm;
     rupture::Material::ElasticMaterials::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Material\n"
-                                "  set Names = rock\n"
-                                "  set Density = 2700\n"
-                                "  set P-wave speed = 6000\n"
-                                "  set S-wave speed = 3464\n"
-                                "end\n");
+    prm.parse_input_from_string(
+      "subsection Material\n"
+      "  set Names = rock\n"
+      "  set Density = 2700\n"
+      "  set P-wave speed = 6000\n"
+      "  set S-wave speed = 3464\n" +
+      (anisotropic ? "  set Symmetry = transversely isotropic\n"
+                     "  set Stiffness = C11 = 1.2e11, C33 = 0.8e11, C13 = "
+                     "3.2e10, C44 = 2.4e10, C66 = 3.6e10\n"
+                     "  set Material axes = " +
+                       axes + "\n" :
+                     std::string()) +
+      "end\n");
     rupture::Material::ElasticMaterials materials;
-    materials.parse_parameters(prm);
+    materials.parse_parameters(prm, dim);
     const auto          &m      = materials.get(0);
     const Tensor<2, dim> strain = 0.5 * (a + transpose(a));
-    const Tensor<2, dim> stress =
+    Tensor<2, dim>       stress =
       m.lambda * trace(strain) * unit_symmetric_tensor<dim>() +
       2 * m.mu * strain;
+    if (anisotropic)
+      {
+        // sigma_I = C_IJ e_J, Voigt order 11, 22, 33, 23, 13, 12 with
+        // engineering shear strains.
+        const unsigned int row[6] = {0, 1, 2, 1, 0, 0},
+                           col[6] = {0, 1, 2, 2, 2, 1};
+        double e[6]               = {0, 0, 0, 0, 0, 0};
+        for (unsigned int J = 0; J < 6; ++J)
+          if (row[J] < dim && col[J] < dim)
+            e[J] = (J < 3 ? 1. : 2.) * strain[row[J]][col[J]];
+        stress = 0;
+        for (unsigned int I = 0; I < 6; ++I)
+          if (row[I] < dim && col[I] < dim)
+            {
+              double value = 0;
+              for (unsigned int J = 0; J < 6; ++J)
+                value += m.voigt[I][J] * e[J];
+              stress[row[I]][col[I]] = stress[col[I]][row[I]] = value;
+            }
+      }
 
     using Output = rupture::Output::VolumeOutput<dim>;
     const typename Output::Compression mode =
@@ -321,6 +355,8 @@ namespace
                 distinct.size(),
                 n_mesh_points);
     std::printf("  topology consistent: %s\n", topology_ok ? "yes" : "no");
+    if (anisotropic)
+      std::printf("  rock: transversely isotropic, axis (%s)\n", axes.c_str());
     std::printf("  displacement, velocity and stress exact to float precision: "
                 "%s %s %s\n",
                 u_error < 1e-6 ? "yes" : "no",
