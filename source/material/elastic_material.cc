@@ -518,6 +518,7 @@ namespace rupture
         for (unsigned int i = 0; i < n; ++i)
           functions[i] = (anisotropic.symmetry[i] == Symmetry::isotropic &&
                           fields.varies(i));
+        frames.assign(n, Tensor<2, 3>(unit_symmetric_tensor<3>()));
         factors.parse(prm, names);
 
         for (unsigned int i = 0; i < n; ++i)
@@ -539,6 +540,7 @@ namespace rupture
                 check_density(v[0], which);
                 m.density = v[0];
                 set_anisotropic(m, anisotropic, i, which);
+                frames[i] = material_axes(anisotropic, i, which);
                 continue;
               }
             if (functions[i])
@@ -636,11 +638,10 @@ namespace rupture
     ElasticMaterials::reference_ratios(const types::material_id id,
                                        const Point<dim_>       &p) const
     {
-      if (tensors.varies(id))
-        return {tensors.ratio(id, tensors.value(id, p)) *
-                  factors.stiffness(id, p),
-                factors.density(id, p),
-                std::numeric_limits<double>::quiet_NaN()};
+      // (A tensor given as functions takes extreme_ratios().)
+      AssertThrow(!tensors.varies(id),
+                  ExcMessage("reference_ratios() of a material whose "
+                             "tensor varies: use extreme_ratios()."));
       if (!functions[id])
         return {factors.stiffness(id, p),
                 factors.density(id, p),
@@ -1024,6 +1025,25 @@ namespace rupture
                   if (dim == 3)
                     out << ", " << v[2];
                   out << " m/s" << (d + 1 < dim ? ";" : "\n");
+                }
+              // Where the material's frame is turned: its principal speeds
+              // (qP, qS1, qS2 along each of its own axes, 3-D waves).
+              if (i < frames.size() &&
+                  (frames[i] - Tensor<2, 3>(unit_symmetric_tensor<3>()))
+                      .norm() > 1e-12)
+                {
+                  out << "     along the material's own axes:";
+                  for (unsigned int a = 0; a < 3; ++a)
+                    {
+                      Tensor<1, 3> n;
+                      for (unsigned int d = 0; d < 3; ++d)
+                        n[d] = frames[i][d][a] + 0.; // (no -0)
+                      const std::array<double, 3> v =
+                        phase_speeds(m.voigt, m.density, n);
+                      out << " " << a + 1 << "-axis (" << n[0] << ", " << n[1]
+                          << ", " << n[2] << "): " << v[0] << ", " << v[1]
+                          << ", " << v[2] << " m/s" << (a < 2 ? ";" : "\n");
+                    }
                 }
               continue;
             }

@@ -213,15 +213,6 @@ namespace rupture
 
 
 
-    double
-    TensorFields::ratio(const unsigned int i, const VoigtMatrix &c) const
-    {
-      Assert(varies(i), ExcInternalError());
-      return fields[i].energy_ratio(c);
-    }
-
-
-
     const EnergyRatio &
     TensorFields::energy_ratio(const unsigned int i) const
     {

@@ -175,10 +175,8 @@ namespace rupture
        * energy density lambda tr(eps)^2 + 2 mu eps : eps is at most
        * max(s) times that of reference(id, max(lambda) / max(s)) for every
        * strain, and the density at least min(r) times reference()'s.
-       * Where an anisotropic material's constants are functions, s is the
-       * energy ratio (EnergyRatio) of its tensor at p to its reference
-       * tensor (TensorFields::reference()) times the stiffness factor, r
-       * the density factor.
+       * Not for an anisotropic material whose constants are functions
+       * (extreme_ratios() bounds those).
        */
       template <int dim>
       std::array<double, 3>
@@ -327,6 +325,9 @@ namespace rupture
       /// Whether material i is isotropic with constants given as functions
       /// (anisotropic materials ignore the isotropic entries).
       std::vector<bool> functions;
+      /// Each material's own axes in model coordinates (the columns; the
+      /// identity for isotropic materials and unturned frames).
+      std::vector<Tensor<2, 3>> frames;
     };
   } // namespace Material
 } // namespace rupture

@@ -80,10 +80,6 @@ namespace rupture
       const VoigtMatrix &
       reference(const unsigned int i) const;
 
-      /// The energy ratio (EnergyRatio) of @p c to reference(i).
-      double
-      ratio(const unsigned int i, const VoigtMatrix &c) const;
-
       /// The EnergyRatio against reference(i).
       const EnergyRatio &
       energy_ratio(const unsigned int i) const;
