@@ -51,8 +51,8 @@ namespace rupture
                               const types::global_dof_index column)
     {
       AssertIndexRange(k, coefficient_vectors.size());
-      Assert(owned_dofs.is_element(row) && owned_dofs.is_element(column),
-             ExcMessage("The components of a node have one owner."));
+      AssertThrow(owned_dofs.is_element(row) && owned_dofs.is_element(column),
+                  ExcMessage("The components of a node have one owner."));
       siblings[owned_dofs.index_within_set(row)][k] =
         owned_dofs.index_within_set(column);
     }

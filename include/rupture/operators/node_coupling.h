@@ -16,19 +16,6 @@ namespace rupture
     using namespace dealii;
 
     /**
-     * A symmetric matrix whose entries couple the displacement components
-     * of one node only, without its diagonal: the off-diagonal part of
-     * the absorbing boundaries' lumped dashpot blocks (the diagonal stays
-     * a vector). A node's components are owned by one process, so every
-     * product is local.
-     *
-     * Assembly: reinit(), then add each cell's contributions to
-     * coefficients(k) (entry i couples DoF i with the DoF of the same node
-     * whose component is k + 1 places further, modulo dim) with the
-     * constraints' distribute_local_to_global(), name the siblings with
-     * set_sibling(), and call finalize().
-     */
-    /**
      * The inverses of the blocks of a node-by-node matrix
      * (NodeCoupling::invert_blocks()).
      */
@@ -60,6 +47,19 @@ namespace rupture
 
 
 
+    /**
+     * A symmetric matrix whose entries couple the displacement components
+     * of one node only, without its diagonal: the off-diagonal part of
+     * the absorbing boundaries' lumped dashpot blocks (the diagonal stays
+     * a vector). A node's components are owned by one process, so every
+     * product is local.
+     *
+     * Assembly: reinit(), then add each cell's contributions to
+     * coefficients(k) (entry i couples DoF i with the DoF of the same node
+     * whose component is k + 1 places further, modulo dim) with the
+     * constraints' distribute_local_to_global(), name the siblings with
+     * set_sibling(), and call finalize().
+     */
     class NodeCoupling
     {
     public:
