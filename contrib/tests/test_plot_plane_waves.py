@@ -42,3 +42,9 @@ def test_refuses_a_file_without_waves(script, tmp_path):
     path.write_text("nothing here\n")
     with pytest.raises(SystemExit):
         plot.read_waves(str(path))
+
+
+def test_refuses_a_missing_file(script, tmp_path):
+    plot = script("plot-plane-waves")
+    with pytest.raises(SystemExit):
+        plot.read_waves(str(tmp_path / "nothing"))

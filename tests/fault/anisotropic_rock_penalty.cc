@@ -18,7 +18,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,11 +53,9 @@ namespace
   bool
   balance_closed(const std::string &directory)
   {
-    std::ifstream     in(directory + "/summary.json");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str().find("\"within\": true") != std::string::npos &&
-           text.str().find("\"status\": \"finished\"") != std::string::npos;
+    const std::string text = tests::read_file(directory + "/summary.json");
+    return text.find("\"within\": true") != std::string::npos &&
+           text.find("\"status\": \"finished\"") != std::string::npos;
   }
 } // namespace
 
