@@ -25,6 +25,7 @@ namespace rupture
       const bool                                           test_mode,
       const MPI_Comm                                       communicator)
       : geometry(geometry)
+      , normal_stress(geometry.changes_normal_stress())
       , sampling(sampling)
       , test_mode(test_mode)
       , root(dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
@@ -34,17 +35,46 @@ namespace rupture
       for (unsigned int k = 0; k < points.size(); ++k)
         {
           const auto &[name, point] = points[k];
-          AssertThrow(std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
-                        -point[1] <= geometry.extent(),
+          if (geometry.dip() == 90)
+            {
+              AssertThrow(
+                std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
+                  -point[1] <= geometry.extent(),
+                dealii::ExcMessage(
+                  "The station <" + name +
+                  "> of <Fault/Output/Stations> is not on the fault: "
+                  "with <Method> = boundary integral the fault is x = "
+                  "0 between the depths 0 and <Fault depth> (y from "
+                  "0 down to -W), e.g. 'bp1_st050: 0, -5000'."));
+            }
+          // (On a dipping fault: the point's projection on the fault's
+          // line, at most a metre from it.)
+          const double angle = geometry.dip() * M_PI / 180;
+          const double distance =
+            geometry.dip() == 90 ?
+              -point[1] :
+              point[0] * std::cos(angle) - point[1] * std::sin(angle);
+          const double off =
+            geometry.dip() == 90 ?
+              0. :
+              std::abs(point[0] * std::sin(angle) + point[1] * std::cos(angle));
+          double x = 0, y = 0;
+          geometry.position(std::max(distance, 0.), x, y);
+          AssertThrow(off < 1 && distance >= -1e-6 &&
+                        distance <= geometry.extent(),
                       dealii::ExcMessage(
                         "The station <" + name +
                         "> of <Fault/Output/Stations> is not on the fault: "
-                        "with <Method> = boundary integral the fault is x = "
-                        "0 between the depths 0 and <Fault depth> (y from 0 "
-                        "down to -W), e.g. 'bp1_st050: 0, -5000'."));
+                        "with <Method> = boundary integral and <Dip> = " +
+                        number(geometry.dip()) +
+                        " the fault runs from (0, 0) down to the distance "
+                        "<Fault depth> along the dip, through (d cos(dip), "
+                        "-d sin(dip)) at the distance d (within a metre; "
+                        "the nearest point of it is (" +
+                        number(x) + ", " + number(y) + "))."));
           Station &s = stations[k];
           s.name     = name;
-          s.depth    = -point[1];
+          s.depth    = distance;
           // Between the element above the station and the one below
           // (the first or the last element's value above or below them).
           s.element = 0;
@@ -133,11 +163,21 @@ namespace rupture
           profiles << std::scientific << std::setprecision(7);
           if (!continuing)
             {
-              profiles << "# Slip profiles: the first row holds 0, 0 and the "
-                          "depths (m) of the elements (their centres, or the "
-                          "fault's nodes with finite elements); each further "
-                          "row t (s), the log10 of the largest slip rate "
-                          "(m/s), and the slip (m) at those depths.\n0 0";
+              if (geometry.dip() == 90)
+                profiles << "# Slip profiles: the first row holds 0, 0 and "
+                            "the depths (m) of the elements (their centres, "
+                            "or the fault's nodes with finite elements); "
+                            "each further row t (s), the log10 of the "
+                            "largest slip rate (m/s), and the slip (m) at "
+                            "those depths.\n0 0";
+              else
+                profiles << "# Slip profiles: the first row holds 0, 0 and "
+                            "the distances (m) of the fault's nodes down the "
+                            "fault (dipping at "
+                         << geometry.dip()
+                         << " degrees); each further row t (s), the log10 "
+                            "of the largest slip rate (m/s), and the slip "
+                            "(m) at those distances.\n0 0";
               for (unsigned int i = 0; i < geometry.size(); ++i)
                 profiles << " " << geometry.depth(i);
               profiles << "\n";
@@ -153,7 +193,10 @@ namespace rupture
                     continuing ? lengths[2 + k] : 0);
           if (!continuing)
             s.file << Output::seas_station_header(
-              "on fault, " + number(s.depth / 1e3) + " km depth", test_mode);
+              "on fault, " + number(s.depth / 1e3) +
+                (geometry.dip() == 90 ? " km depth" : " km down-dip"),
+              test_mode,
+              normal_stress);
         }
     }
 
@@ -197,8 +240,11 @@ namespace rupture
                     mix(fault.slip(i), fault.slip(j)),
                     mix(fault.slip_rate(i), fault.slip_rate(j)),
                     mix(fault.shear_stress(i), fault.shear_stress(j)) / 1e6,
-                    mix(std::log10(fault.state(i)),
-                        std::log10(fault.state(j))));
+                    mix(std::log10(fault.state(i)), std::log10(fault.state(j))),
+                    fault.normal_stress_changes() ?
+                      mix(fault.normal_stress(i), fault.normal_stress(j)) /
+                        1e6 :
+                      std::nan(""));
                 }
             }
         }

@@ -32,17 +32,42 @@ namespace rupture
         "with the body's stiffness from its Green's function (the review "
         "paper's dual method) or from finite elements (<Boundary "
         "integral/Stiffness>): quasi-dynamic earthquake cycles on the "
-        "antiplane half-space (SCEC SEAS BP1).");
+        "antiplane half-space (SCEC SEAS BP1) or a dipping fault in a "
+        "plane-strain half-space (BP3).");
       prm.enter_subsection("Boundary integral");
       {
         prm.declare_entry(
           "Geometry",
           "antiplane half-space",
-          Patterns::Selection("antiplane half-space"),
-          "The body whose Green's function turns slip into traction: "
-          "'antiplane half-space', a vertical strike-slip fault at x = 0 "
-          "from the free surface y = 0 down, out-of-plane displacement only "
-          "(the review paper's section 8, SEAS BP1).");
+          Patterns::Selection("antiplane half-space|plane strain half-space"),
+          "The body whose stiffness turns slip into traction: 'antiplane "
+          "half-space', a vertical strike-slip fault at x = 0 from the free "
+          "surface y = 0 down, out-of-plane displacement only (the review "
+          "paper's section 8, SEAS BP1); 'plane strain half-space', a "
+          "fault dipping at <Dip> from the surface point x = 0 down towards "
+          "x > 0, in-plane displacement, the slip changing the normal "
+          "stress as well as the shear traction (SEAS BP3; <Stiffness> = "
+          "finite elements, an isotropic body of the first material's "
+          "S- and P-wave speeds).");
+        prm.declare_entry("Dip",
+                          "90",
+                          Patterns::Double(),
+                          "With <Geometry> = plane strain half-space: the "
+                          "fault's dip (degrees from the horizontal, 10 to "
+                          "90). The fault passes through (d cos(dip), "
+                          "-d sin(dip)) at the distance d down it; <Fault "
+                          "depth>, <Element size> and the stations' places "
+                          "are measured along it. 90 with the antiplane "
+                          "half-space.");
+        prm.declare_entry("Sense of slip",
+                          "thrust",
+                          Patterns::Selection("thrust|normal"),
+                          "With <Geometry> = plane strain half-space: "
+                          "'thrust', the block above the fault (the hanging "
+                          "wall) moves up the dip relative to the one "
+                          "below, or 'normal', down the dip. The plates "
+                          "drive the slip that way; the shear traction and "
+                          "the slip of the outputs are positive that way.");
         prm.declare_entry(
           "Stiffness",
           "Green's function",
@@ -77,9 +102,10 @@ namespace rupture
         prm.declare_entry("Fault depth",
                           "40e3",
                           Patterns::Double(0),
-                          "W (m, > 0): the depth down to which the fault is "
-                          "solved; below it the fault slips at <Plate "
-                          "rate>, which loads the part above.");
+                          "W (m, > 0): the depth (the distance along the "
+                          "dip, with a dipping fault) down to which the "
+                          "fault is solved; below it the fault slips at "
+                          "<Plate rate>, which loads the part above.");
         prm.declare_entry("Element size",
                           "100",
                           Patterns::Double(0),
@@ -100,8 +126,11 @@ namespace rupture
                           "50e6",
                           Patterns::Anything(),
                           "sigma_n (Pa, compressive > 0) as a function of "
-                          "x, y, z (y up, the fault at x = 0: the depth is "
-                          "-y; constants pi and year).");
+                          "x, y, z (y up, the vertical fault at x = 0: the "
+                          "depth is -y; a dipping fault passes through "
+                          "(d cos(dip), -d sin(dip)); constants pi and "
+                          "year). With <Geometry> = plane strain half-space "
+                          "the value at the start: the slip changes it.");
         prm.declare_entry(
           "Initial shear stress",
           "",
@@ -221,7 +250,9 @@ namespace rupture
         std::vector<double> v;
         for (unsigned int i = 0; i < body.size(); ++i)
           {
-            const double value = f.value(Point<3>(0., -body.depth(i), 0.));
+            double x = 0, y = 0;
+            body.position(body.depth(i), x, y);
+            const double value = f.value(Point<3>(x, y, 0.));
             AssertThrow(std::isfinite(value),
                         ExcMessage("<Boundary integral/" + entry +
                                    "> is not finite at the depth " +
@@ -310,8 +341,26 @@ namespace rupture
           first_material_value(prm, "Young's modulus") /
           (2 * (1 + first_material_value(prm, "Poisson's ratio")));
       vertical_shear_modulus = shear_modulus;
+      const double density   = first_material_value(prm, "Density");
+      // (Lame's first constant: only the plane-strain body needs it, which
+      // checks it; the antiplane problem does not read it.)
+      try
+        {
+          if (prm.get("Parametrization") == "wave speeds")
+            lambda =
+              density * std::pow(first_material_value(prm, "P-wave speed"), 2) -
+              2 * shear_modulus;
+          else
+            {
+              const double nu = first_material_value(prm, "Poisson's ratio");
+              lambda          = 2 * shear_modulus * nu / (1 - 2 * nu);
+            }
+        }
+      catch (const ExceptionBase &)
+        {
+          lambda = std::nan("");
+        }
       read_anisotropic_moduli(prm);
-      const double density = first_material_value(prm, "Density");
       prm.leave_subsection();
 
       // The friction law, the damping and the fault's outputs.
@@ -357,6 +406,9 @@ namespace rupture
 
       // The fault.
       prm.enter_subsection("Boundary integral");
+      geometry     = prm.get("Geometry");
+      dip          = prm.get_double("Dip");
+      thrust       = prm.get("Sense of slip") == "thrust";
       stiffness    = prm.get("Stiffness");
       fe_degree    = prm.get_integer("Finite-element degree");
       domain_size  = prm.get_double("Domain size");
@@ -382,6 +434,37 @@ namespace rupture
       sampling.profile_during  = prm.get_double("Profile interval during "
                                                 "events");
       prm.leave_subsection();
+      if (geometry == "antiplane half-space")
+        {
+          AssertThrow(dip == 90,
+                      ExcMessage("<Boundary integral/Dip> is " + number(dip) +
+                                 ", but the antiplane half-space's fault is "
+                                 "vertical: 90. A dipping fault needs "
+                                 "<Geometry> = plane strain half-space."));
+        }
+      else
+        {
+          AssertThrow(stiffness == "finite elements",
+                      ExcMessage("<Boundary integral/Geometry> = plane "
+                                 "strain half-space takes its stiffness from "
+                                 "finite elements: set <Stiffness> = finite "
+                                 "elements (there is no Green's function of "
+                                 "it in rupture)."));
+          AssertThrow(vertical_shear_modulus == shear_modulus,
+                      ExcMessage("<Boundary integral/Geometry> = plane "
+                                 "strain half-space takes an isotropic body: "
+                                 "the first material must be isotropic."));
+          AssertThrow(std::isfinite(dip) && dip >= 10 && dip <= 90,
+                      ExcMessage("<Boundary integral/Dip> is " + number(dip) +
+                                 ", but it must lie between 10 and 90 "
+                                 "(degrees from the horizontal)."));
+          AssertThrow(std::isfinite(lambda) &&
+                        3 * lambda + 2 * shear_modulus > 0,
+                      ExcMessage("<Material>: the plane-strain body needs "
+                                 "Poisson's ratio in (-1, 0.5) (a P-wave "
+                                 "speed above sqrt(4/3) times the S-wave "
+                                 "speed)."));
+        }
       AssertThrow(integrator.minimum_step > 0 &&
                     integrator.maximum_step >= integrator.minimum_step &&
                     integrator.maximum_growth > 1,

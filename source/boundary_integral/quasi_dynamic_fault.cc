@@ -37,13 +37,16 @@ namespace rupture
       , current(n, 0.)
       , velocity(n, plate_rate)
       , traction(initial_shear)
+      , normal_now(normal_stress)
       , event_start(n, 0.)
       , event_peak(n, 0.)
     {
       AssertThrow(sigma.size() == n && tau0.size() == n, ExcInternalError());
       for (unsigned int i = 0; i < n; ++i)
         {
-          points.emplace_back(0., -geometry.depth(i), 0.);
+          double x = 0, y = 0;
+          geometry.position(geometry.depth(i), x, y);
+          points.emplace_back(x, y, 0.);
           // The law holds at the start: S(V_p, state) = tau0 - eta V_p.
           const double friction =
             sigma[i] > 0 ? (std::abs(tau0[i]) - eta * plate_rate) / sigma[i] :
@@ -77,7 +80,11 @@ namespace rupture
               row_end   = end;
             }
         }
-      stiffness = geometry.rows(row_begin, row_end);
+      stiffness        = geometry.rows(row_begin, row_end);
+      normal_stiffness = geometry.normal_rows(row_begin, row_end);
+      AssertThrow(normal_stiffness.empty() ||
+                    normal_stiffness.size() == stiffness.size(),
+                  ExcInternalError());
     }
 
 
@@ -127,6 +134,7 @@ namespace rupture
     double
     QuasiDynamicFault::solve_rate(const unsigned int     i,
                                   const double           tau,
+                                  const double           normal_stress,
                                   const Friction::State &state) const
     {
       // g(V) = |tau| - eta V - S(V) falls with V: one root in [0, hi].
@@ -134,7 +142,7 @@ namespace rupture
       double       dS = 0, dp = 0;
       const auto   g = [&](const double V, double &dg) {
         const double S =
-          law.strength_at_rate(points[i], state, V, sigma[i], dS, dp);
+          law.strength_at_rate(points[i], state, V, normal_stress, dS, dp);
         dg = -eta - dS;
         return target - eta * V - S;
       };
@@ -203,8 +211,30 @@ namespace rupture
           for (; j < n; ++j)
             sum[0] += row[j] * relative[j];
           const double tau = tau0[i] + ((sum[0] + sum[1]) + (sum[2] + sum[3]));
+          // (The normal stress changes with the slip where the body
+          // couples them, as the shear traction does.)
+          double normal_stress = sigma[i];
+          if (!normal_stiffness.empty())
+            {
+              const double *normal_row = &normal_stiffness[std::size_t(r) * n];
+              double        change     = 0;
+              for (unsigned int k = 0; k < n; ++k)
+                change += normal_row[k] * relative[k];
+              normal_stress += change;
+              normal_now[i] = normal_stress;
+              AssertThrow(normal_stress > 0,
+                          ExcMessage(
+                            "The fault would open at " +
+                            std::to_string(geometry.depth(i)) +
+                            " m down the fault at t = " + std::to_string(t) +
+                            " s: the slip has made its normal stress " +
+                            std::to_string(normal_stress) +
+                            " Pa, and the boundary-integral method models "
+                            "a fault that stays closed. Give a larger "
+                            "<Boundary integral/Normal stress>."));
+            }
           unpack_state(i, y, state);
-          const double V = solve_rate(i, tau, state);
+          const double V = solve_rate(i, tau, normal_stress, state);
           velocity[i]    = V; // the next solve's first guess
           local[r]       = tau < 0 ? -V : V;
           law.state_rate(points[i], state, V, state_rates);
@@ -257,6 +287,20 @@ namespace rupture
                                       MPI_DOUBLE,
                                       communicator);
       AssertThrowMPI(ierr);
+      if (!normal_stiffness.empty())
+        {
+          std::vector<double> mine(normal_now.begin() + row_begin,
+                                   normal_now.begin() + row_end);
+          const int           error = MPI_Allgatherv(mine.data(),
+                                           mine.size(),
+                                           MPI_DOUBLE,
+                                           normal_now.data(),
+                                           counts.data(),
+                                           offsets.data(),
+                                           MPI_DOUBLE,
+                                           communicator);
+          AssertThrowMPI(error);
+        }
       for (unsigned int i = 0; i < n; ++i)
         {
           current[i]  = y[i];
@@ -293,9 +337,13 @@ namespace rupture
     {
       // (The guesses of all elements: they are the slip rates of the last
       // evaluate(), except where a later stage of this rank changed them.)
-      BinaryIO::write(out,
-                      std::vector<std::vector<double>>{
-                        current, velocity, traction, event_start, event_peak});
+      std::vector<std::vector<double>> fields = {
+        current, velocity, traction, event_start, event_peak};
+      // (The normal stress only where it changes: the checkpoints of the
+      // antiplane problem stay as they were.)
+      if (!normal_stiffness.empty())
+        fields.push_back(normal_now);
+      BinaryIO::write(out, fields);
       BinaryIO::write(out, variables);
     }
 
@@ -307,7 +355,8 @@ namespace rupture
       std::vector<std::vector<double>> fields, state;
       BinaryIO::read(in, fields);
       BinaryIO::read(in, state);
-      AssertThrow(fields.size() == 5 && state.size() == n_variables,
+      AssertThrow(fields.size() == (normal_stiffness.empty() ? 5u : 6u) &&
+                    state.size() == n_variables,
                   ExcMessage("The checkpoint's fault is damaged."));
       for (const auto &f : fields)
         AssertThrow(f.size() == n,
@@ -319,7 +368,9 @@ namespace rupture
       traction    = fields[2];
       event_start = fields[3];
       event_peak  = fields[4];
-      variables   = state;
+      if (!normal_stiffness.empty())
+        normal_now = fields[5];
+      variables = state;
     }
 
 
@@ -329,7 +380,9 @@ namespace rupture
     {
       const auto fastest   = std::max_element(velocity.begin(), velocity.end());
       const unsigned int i = fastest - velocity.begin();
-      return {*fastest, Point<2>(0., -geometry.depth(i))};
+      double             x = 0, y = 0;
+      geometry.position(geometry.depth(i), x, y);
+      return {*fastest, Point<2>(x, y)};
     }
 
 

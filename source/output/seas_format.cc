@@ -12,7 +12,9 @@ namespace rupture
   namespace Output
   {
     std::string
-    seas_station_header(const std::string &location, const bool test_mode)
+    seas_station_header(const std::string &location,
+                        const bool         test_mode,
+                        const bool         normal_stress)
     {
       std::ostringstream out;
       out << "# This is the file header:\n"
@@ -28,11 +30,17 @@ namespace rupture
           << "# Column #1 = Time (s)\n"
           << "# Column #2 = Slip (m)\n"
           << "# Column #3 = Slip rate (log10 m/s)\n"
-          << "# Column #4 = Shear stress (MPa)\n"
-          << "# Column #5 = State (log10 s)\n"
-          << "# The line below lists the names of the data fields\n"
-          << "t slip slip_rate shear_stress state\n"
-          << "# Here is the time-series data.\n";
+          << "# Column #4 = Shear stress (MPa)\n";
+      if (normal_stress)
+        out << "# Column #5 = Normal stress (MPa)\n"
+            << "# Column #6 = State (log10 s)\n"
+            << "# The line below lists the names of the data fields\n"
+            << "t slip slip_rate shear_stress normal_stress state\n";
+      else
+        out << "# Column #5 = State (log10 s)\n"
+            << "# The line below lists the names of the data fields\n"
+            << "t slip slip_rate shear_stress state\n";
+      out << "# Here is the time-series data.\n";
       return out.str();
     }
 
@@ -43,7 +51,8 @@ namespace rupture
                      const double slip,
                      const double rate,
                      const double shear_stress,
-                     const double log10_state)
+                     const double log10_state,
+                     const double normal_stress)
     {
       std::ostringstream out;
       // (The time with 15 digits: an event of steps of milliseconds late
@@ -53,7 +62,10 @@ namespace rupture
       const double magnitude = std::abs(rate);
       out << " " << slip << " "
           << (magnitude > 0 ? std::log10(magnitude) : -300.) << " "
-          << shear_stress << " " << log10_state << "\n";
+          << shear_stress << " ";
+      if (!std::isnan(normal_stress))
+        out << normal_stress << " ";
+      out << log10_state << "\n";
       return out.str();
     }
   } // namespace Output

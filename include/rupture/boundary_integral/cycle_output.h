@@ -27,8 +27,9 @@ namespace rupture
      * - statistics.dat: step, time, time step, largest slip rate, rejected
      *   steps so far;
      * - <station>.dat: the SEAS station files (t, slip, log10 slip rate,
-     *   shear stress in MPa, log10 state), interpolated linearly between
-     *   the element centres;
+     *   shear stress in MPa, the normal stress in MPa where the slip
+     *   changes it, log10 state), interpolated linearly between the
+     *   element centres;
      * - slip_profiles.dat: the slip at every element (a first row of their
      *   depths).
      * The statistics and stations get a row after a step when the log10 of
@@ -51,8 +52,9 @@ namespace rupture
       };
 
       /**
-       * Check the stations (named points (0, -depth) on the fault of
-       * @p geometry; the message names <Fault/Output/Stations>).
+       * Check the stations (named points (x, y) on the fault of
+       * @p geometry: (0, -depth) on a vertical fault; the message names
+       * <Fault/Output/Stations>).
        */
       CycleOutput(const Stiffness                                     &geometry,
                   const std::vector<std::pair<std::string, Point<2>>> &stations,
@@ -106,7 +108,10 @@ namespace rupture
                 const bool          continuing,
                 const std::uint64_t length);
 
-      const Stiffness     &geometry;
+      const Stiffness &geometry;
+      /// Whether the stations get a normal-stress column (the body
+      /// couples it to the slip).
+      const bool           normal_stress;
       const Sampling       sampling;
       const bool           test_mode;
       const bool           root;

@@ -25,9 +25,12 @@ namespace rupture
      *   tau_i - eta V_i = S_i(V_i, state_i),
      *   tau_i = tau0_i + sum_j K_ij (s_j - V_p t)
      * (a Stiffness: AntiplaneHalfSpace), S the law's strength at the rate with
-     * the state held (Friction::Interface::strength_at_rate). The law sees the
-     * element's centre as the point (0, -depth, 0): its functions of
-     * position are written in the depth -y.
+     * the state held (Friction::Interface::strength_at_rate) under the
+     * normal stress sigma_i = sigma0_i + sum_j N_ij (s_j - V_p t), N the
+     * body's normal stiffness (Stiffness::normal_rows(); none in the
+     * antiplane problem: sigma_i = sigma0_i). The law sees the element as
+     * its position (x, y, 0) (Stiffness::position(): (0, -depth, 0) on a
+     * vertical fault): its functions of position are written in x and y.
      *
      * The unknowns are one vector y: the N slips, then the N values of
      * each state variable (in its logarithm where the law says the
@@ -111,6 +114,18 @@ namespace rupture
       {
         return traction[i];
       }
+      /// The normal stress (Pa, compression > 0) on element i.
+      double
+      normal_stress(const unsigned int i) const
+      {
+        return normal_now[i];
+      }
+      /// Whether the slip changes the normal stress (a plane-strain body).
+      bool
+      normal_stress_changes() const
+      {
+        return !normal_stiffness.empty();
+      }
       /// The law's first state variable (as the law defines it).
       double
       state(const unsigned int i) const;
@@ -141,10 +156,12 @@ namespace rupture
 
     private:
       /// The slip rate at element @p i for the elastic traction
-      /// @p tau with the state @p state.
+      /// @p tau and the normal stress @p normal_stress with the state
+      /// @p state.
       double
       solve_rate(const unsigned int     i,
                  const double           tau,
+                 const double           normal_stress,
                  const Friction::State &state) const;
       /// Fill the state of element @p i from y.
       void
@@ -169,10 +186,12 @@ namespace rupture
       /// This rank's rows of K, and their range.
       unsigned int        row_begin = 0, row_end = 0;
       std::vector<double> stiffness;
+      /// This rank's rows of the normal stiffness (empty: none).
+      std::vector<double> normal_stiffness;
       /// Rows per rank, for the exchange of the rates.
       std::vector<int> counts, offsets;
       // The last evaluate().
-      std::vector<double>              current, velocity, traction;
+      std::vector<double>              current, velocity, traction, normal_now;
       std::vector<std::vector<double>> variables;
       // The open event.
       std::vector<double> event_start, event_peak;

@@ -54,16 +54,21 @@ namespace rupture
       /// The antiplane shear moduli (Pa): C55 (sigma_xz per u,x: the
       /// modulus across the fault, of the moment) and C44 (sigma_yz per
       /// u,y); equal for an isotropic body.
-      double                                        shear_modulus          = 0;
-      double                                        vertical_shear_modulus = 0;
-      double                                        radiation_damping      = 0;
-      double                                        plate_rate             = 0;
+      double shear_modulus          = 0;
+      double vertical_shear_modulus = 0;
+      /// Lame's first constant (Pa), for the plane-strain body.
+      double                                        lambda            = 0;
+      double                                        radiation_damping = 0;
+      double                                        plate_rate        = 0;
       std::unique_ptr<Friction::Interface>          law;
       std::string                                   law_name;
       Fault::EventCatalogue<2>                      events;
       std::vector<std::pair<std::string, Point<2>>> stations;
 
       // <Boundary integral>.
+      std::string           geometry;
+      double                dip    = 90;
+      bool                  thrust = true;
       std::string           stiffness;
       int                   fe_degree   = 1;
       double                domain_size = 0, cell_growth = 1;

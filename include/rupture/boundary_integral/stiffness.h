@@ -1,6 +1,7 @@
 #ifndef rupture_boundary_integral_stiffness_h
 #define rupture_boundary_integral_stiffness_h
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -10,12 +11,14 @@ namespace rupture
   {
     /**
      * What the boundary-integral fault needs of the body: the elements of
-     * a fault that runs down from the surface (their depths and lengths)
-     * and the dense stiffness K_ij, the shear traction at element i of a
-     * unit slip of element j (Pa/m). The Green's function of the antiplane
-     * half-space gives it in closed form (AntiplaneHalfSpace); a
-     * finite-element model of the body gives it column by column, one
-     * solve per element (AntiplaneFiniteElements).
+     * a fault that runs down from the surface (their distances down the
+     * fault and lengths) and the dense stiffness K_ij, the shear traction
+     * at element i of a unit slip of element j (Pa/m). The Green's
+     * function of the antiplane half-space gives it in closed form
+     * (AntiplaneHalfSpace); a finite-element model of the body gives it
+     * column by column, one solve per element (AntiplaneFiniteElements,
+     * and PlaneStrainFiniteElements for a dipping fault, whose slip also
+     * changes the normal stress: normal_rows()).
      */
     class Stiffness
     {
@@ -26,8 +29,9 @@ namespace rupture
       virtual unsigned int
       size() const = 0;
 
-      /// The depth (m, > 0, increasing with i) of element @p i, where its
-      /// traction and slip rate are taken.
+      /// The distance (m, >= 0, increasing with i) of element @p i from
+      /// the surface, measured down the fault (the depth where the fault
+      /// is vertical), where its traction and slip rate are taken.
       virtual double
       depth(const unsigned int i) const = 0;
 
@@ -35,8 +39,8 @@ namespace rupture
       virtual double
       length(const unsigned int i) const = 0;
 
-      /// The depth (m) of the lower end of the solved fault, below which it
-      /// slips at the plate rate.
+      /// The distance down the fault (m) of the lower end of the solved
+      /// fault, below which it slips at the plate rate.
       virtual double
       extent() const = 0;
 
@@ -47,6 +51,45 @@ namespace rupture
       /// Rows @p begin to @p end (excluded) of K, one after the other.
       virtual std::vector<double>
       rows(const unsigned int begin, const unsigned int end) const = 0;
+
+      /**
+       * Rows @p begin to @p end of the normal stiffness: the change of the
+       * normal stress (Pa, compression > 0) at element i per unit slip of
+       * element j (Pa/m). Empty (the default) where slip does not change
+       * the normal stress (the antiplane problem).
+       */
+      virtual std::vector<double>
+      normal_rows(const unsigned int /*begin*/,
+                  const unsigned int /*end*/) const
+      {
+        return {};
+      }
+
+      /// Whether normal_rows() gives anything.
+      virtual bool
+      changes_normal_stress() const
+      {
+        return false;
+      }
+
+      /// The fault's dip (degrees from the horizontal; 90: vertical). The
+      /// fault runs from the surface point x = 0 down towards x > 0.
+      virtual double
+      dip() const
+      {
+        return 90;
+      }
+
+      /// The position (x, y; y up, the surface y = 0) of the point at the
+      /// distance @p distance down the fault.
+      void
+      position(const double distance, double &x, double &y) const
+      {
+        const double angle = dip() * M_PI / 180;
+        // (Exactly (0, -distance) for a vertical fault.)
+        x = dip() == 90 ? 0. : distance * std::cos(angle);
+        y = dip() == 90 ? -distance : -distance * std::sin(angle);
+      }
 
       /// What the body and its elements are, for the screen.
       virtual std::string
