@@ -9,6 +9,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -18,60 +19,80 @@ namespace rupture
 {
   namespace BoundaryIntegral
   {
+    double
+    station_distance(const std::string &name,
+                     const Point<2>    &point,
+                     const double       dip,
+                     const double       extent)
+    {
+      if (dip == 90)
+        {
+          AssertThrow(std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
+                        -point[1] <= extent,
+                      dealii::ExcMessage(
+                        "The station <" + name +
+                        "> of <Fault/Output/Stations> is not on the fault: "
+                        "with <Method> = boundary integral the fault is x = "
+                        "0 between the depths 0 and <Fault depth> (y from "
+                        "0 down to -W), e.g. 'bp1_st050: 0, -5000'."));
+          return -point[1];
+        }
+      // (On a dipping fault: the point's projection on the fault's line,
+      // at most a metre from it.)
+      const double angle    = dip * M_PI / 180;
+      const double distance = point[0] * std::cos(angle) -
+                              point[1] * std::sin(angle),
+                   off = std::abs(point[0] * std::sin(angle) +
+                                  point[1] * std::cos(angle));
+      const double nearest = std::clamp(distance, 0., extent);
+      AssertThrow(off < 1 && distance >= -1e-6 && distance <= extent,
+                  dealii::ExcMessage(
+                    "The station <" + name +
+                    "> of <Fault/Output/Stations> is not on the fault: "
+                    "with <Method> = boundary integral and <Dip> = " +
+                    number(dip) +
+                    " the fault runs from (0, 0) down to the distance "
+                    "<Fault depth> along the dip, through (d cos(dip), "
+                    "-d sin(dip)) at the distance d (within a metre; the "
+                    "nearest point of it is (" +
+                    number(nearest * std::cos(angle)) + ", " +
+                    number(-nearest * std::sin(angle)) + "))."));
+      return std::max(distance, 0.);
+    }
+
+
+
     CycleOutput::CycleOutput(
       const Stiffness                                     &geometry,
       const std::vector<std::pair<std::string, Point<2>>> &points,
       const Sampling                                      &sampling,
       const bool                                           test_mode,
-      const MPI_Comm                                       communicator)
+      const MPI_Comm                                       communicator,
+      const std::vector<std::pair<std::string, Point<2>>> &surface_points,
+      const double                                         plate_rate)
       : geometry(geometry)
       , normal_stress(geometry.changes_normal_stress())
       , sampling(sampling)
       , test_mode(test_mode)
       , root(dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       , stations(points.size())
+      , surface_stations(surface_points.size())
+      , plate_rate(plate_rate)
     {
+      AssertThrow(surface_points.size() == geometry.n_surface_points(),
+                  dealii::ExcInternalError());
+      for (unsigned int k = 0; k < surface_points.size(); ++k)
+        {
+          surface_stations[k].name    = surface_points[k].first;
+          surface_stations[k].depth   = surface_points[k].second[0];
+          surface_stations[k].element = k;
+        }
       const unsigned int n = geometry.size();
       for (unsigned int k = 0; k < points.size(); ++k)
         {
           const auto &[name, point] = points[k];
-          if (geometry.dip() == 90)
-            {
-              AssertThrow(
-                std::abs(point[0]) < 1e-6 && point[1] <= 0 &&
-                  -point[1] <= geometry.extent(),
-                dealii::ExcMessage(
-                  "The station <" + name +
-                  "> of <Fault/Output/Stations> is not on the fault: "
-                  "with <Method> = boundary integral the fault is x = "
-                  "0 between the depths 0 and <Fault depth> (y from "
-                  "0 down to -W), e.g. 'bp1_st050: 0, -5000'."));
-            }
-          // (On a dipping fault: the point's projection on the fault's
-          // line, at most a metre from it.)
-          const double angle = geometry.dip() * M_PI / 180;
           const double distance =
-            geometry.dip() == 90 ?
-              -point[1] :
-              point[0] * std::cos(angle) - point[1] * std::sin(angle);
-          const double off =
-            geometry.dip() == 90 ?
-              0. :
-              std::abs(point[0] * std::sin(angle) + point[1] * std::cos(angle));
-          double x = 0, y = 0;
-          geometry.position(std::max(distance, 0.), x, y);
-          AssertThrow(off < 1 && distance >= -1e-6 &&
-                        distance <= geometry.extent(),
-                      dealii::ExcMessage(
-                        "The station <" + name +
-                        "> of <Fault/Output/Stations> is not on the fault: "
-                        "with <Method> = boundary integral and <Dip> = " +
-                        number(geometry.dip()) +
-                        " the fault runs from (0, 0) down to the distance "
-                        "<Fault depth> along the dip, through (d cos(dip), "
-                        "-d sin(dip)) at the distance d (within a metre; "
-                        "the nearest point of it is (" +
-                        number(x) + ", " + number(y) + "))."));
+            station_distance(name, point, geometry.dip(), geometry.extent());
           Station &s = stations[k];
           s.name     = name;
           s.depth    = distance;
@@ -137,7 +158,8 @@ namespace rupture
         return;
       const bool with_profiles =
         sampling.profile_between > 0 || sampling.profile_during > 0;
-      AssertThrow(!continuing || lengths.size() == 2 + stations.size(),
+      AssertThrow(!continuing || lengths.size() == 2 + stations.size() +
+                                                     surface_stations.size(),
                   dealii::ExcMessage("The checkpoint has another number of "
                                      "stations than <Fault/Output/Stations> "
                                      "gives."));
@@ -198,6 +220,18 @@ namespace rupture
               test_mode,
               normal_stress);
         }
+      for (unsigned int k = 0; k < surface_stations.size(); ++k)
+        {
+          Station &s = surface_stations[k];
+          s.path     = directory.record(s.name + ".dat");
+          open_file(s.file,
+                    s.path,
+                    continuing,
+                    continuing ? lengths[2 + stations.size() + k] : 0);
+          if (!continuing)
+            s.file << Output::seas_surface_header(
+              "on surface, x = " + number(s.depth / 1e3) + " km", test_mode);
+        }
     }
 
 
@@ -246,6 +280,27 @@ namespace rupture
                         1e6 :
                       std::nan(""));
                 }
+              if (!surface_stations.empty())
+                {
+                  // The displacement from the slip relative to the plate's,
+                  // the velocity from the slip rate relative to it.
+                  const unsigned int n = fault.size();
+                  std::vector<std::array<double, 2>> u, v;
+                  relative.resize(n);
+                  for (unsigned int i = 0; i < n; ++i)
+                    relative[i] = fault.slip(i) - plate_rate * t;
+                  for (unsigned int k = 0; k < surface_stations.size(); ++k)
+                    u.push_back(
+                      geometry.surface_motion(k, relative, plate_rate * t));
+                  for (unsigned int i = 0; i < n; ++i)
+                    relative[i] = fault.slip_rate(i) - plate_rate;
+                  for (unsigned int k = 0; k < surface_stations.size(); ++k)
+                    v.push_back(
+                      geometry.surface_motion(k, relative, plate_rate));
+                  for (unsigned int k = 0; k < surface_stations.size(); ++k)
+                    surface_stations[k].file
+                      << Output::seas_surface_row(t, u[k], v[k]);
+                }
             }
         }
       const double interval = vmax >= sampling.event_rate ?
@@ -287,6 +342,8 @@ namespace rupture
       state.push_back(length(profiles, profiles_path));
       for (auto &s : stations)
         state.push_back(length(s.file, s.path));
+      for (auto &s : surface_stations)
+        state.push_back(length(s.file, s.path));
       BinaryIO::write(out, state);
     }
 
@@ -297,7 +354,8 @@ namespace rupture
     {
       std::vector<double> state;
       BinaryIO::read(in, state);
-      AssertThrow(state.size() == 7 + stations.size(),
+      AssertThrow(state.size() ==
+                    7 + stations.size() + surface_stations.size(),
                   dealii::ExcMessage(
                     "The checkpoint has another number of stations than "
                     "<Fault/Output/Stations> gives."));

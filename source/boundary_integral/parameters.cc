@@ -1,6 +1,7 @@
 // The boundary-integral method's parameters.
 
 #include <rupture/base/utilities.h>
+#include <rupture/boundary_integral/cycle_output.h>
 #include <rupture/boundary_integral/settings.h>
 #include <rupture/boundary_integral/simulation.h>
 #include <rupture/boundary_integral/stiffness.h>
@@ -140,6 +141,18 @@ namespace rupture
           "tau_0 = sigma_n a_max asinh[V_p / (2 V_0) exp((f_0 + b ln(V_0 / "
           "V_p)) / a_max)] + eta V_p). The law's state at the start is the "
           "one for which it carries tau_0 - eta V_p at V_p.");
+        prm.declare_entry(
+          "Surface stations",
+          "",
+          Patterns::Anything(),
+          "With <Geometry> = plane strain half-space: points on the free "
+          "surface whose displacement and velocity (x and y) are written "
+          "with the fault stations' rows, to <name>.dat (the SEAS BP3 "
+          "surface stations), as 'name: x, 0; name: x, 0' (m; x <= 0 the "
+          "footwall's side, the fault's trace x = 0 included, x > 0 the "
+          "hanging wall's). The blocks move rigidly by +-V_p t / 2 along "
+          "the slip direction far from the fault; each surface station adds "
+          "a row per fault node to the stiffness's solves.");
         prm.declare_entry("Relative tolerance",
                           "1e-7",
                           Patterns::Double(0, 1),
@@ -419,6 +432,16 @@ namespace rupture
       AssertThrow(std::isfinite(plate_rate) && plate_rate > 0,
                   ExcMessage("<Boundary integral/Plate rate> must be > 0 "
                              "(m/s)."));
+      surface_stations = Utilities::parse_named_points<2>(
+        prm.get("Surface stations"), "Boundary integral/Surface stations");
+      for (const auto &[name, point] : surface_stations)
+        AssertThrow(point[1] == 0 && std::isfinite(point[0]),
+                    ExcMessage("The surface station <" + name +
+                               "> of <Boundary integral/Surface stations> "
+                               "has y = " +
+                               number(point[1]) +
+                               ", but it must lie on the surface: 'name: x, "
+                               "0'."));
       normal_stress                 = prm.get("Normal stress");
       initial_shear_stress          = prm.get("Initial shear stress");
       integrator.relative_tolerance = prm.get_double("Relative tolerance");
@@ -441,6 +464,11 @@ namespace rupture
                                  ", but the antiplane half-space's fault is "
                                  "vertical: 90. A dipping fault needs "
                                  "<Geometry> = plane strain half-space."));
+          AssertThrow(surface_stations.empty(),
+                      ExcMessage("<Boundary integral/Surface stations> are "
+                                 "written with <Geometry> = plane strain "
+                                 "half-space only; leave it empty with the "
+                                 "antiplane half-space."));
         }
       else
         {
@@ -465,6 +493,9 @@ namespace rupture
                                  "speed above sqrt(4/3) times the S-wave "
                                  "speed)."));
         }
+      // (The stations, before the body's stiffness is computed.)
+      for (const auto &[name, point] : stations)
+        station_distance(name, point, dip, fault_depth);
       AssertThrow(integrator.minimum_step > 0 &&
                     integrator.maximum_step >= integrator.minimum_step &&
                     integrator.maximum_growth > 1,

@@ -5,6 +5,7 @@
 #include <rupture/boundary_integral/text.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -381,6 +382,68 @@ namespace rupture
       const std::array<double, 2> d        = {
                {sense * down_dip[0], sense * down_dip[1]}};
       const std::array<double, 2> normal_direction = {{sine, cosine}};
+      direction                                    = d;
+
+      // The surface points: the cell that holds each (the footwall's at
+      // the fault's trace x = 0), and the shape values of its unknowns
+      // there.
+      struct Probe
+      {
+        std::vector<types::global_dof_index> dofs;
+        std::vector<unsigned int>            components;
+        std::vector<double>                  values;
+      };
+      std::vector<Probe> probes;
+      {
+        const MappingQ1<2> mapping;
+        const double       reach_left = left_end, reach_right = right_end;
+        for (const double x : settings.surface_points)
+          {
+            AssertThrow(std::isfinite(x) && x > reach_left &&
+                          x < reach_right,
+                        ExcMessage("<Boundary integral/Surface stations>: x "
+                                   "= " +
+                                   number(x) +
+                                   " m is not on the meshed surface, which "
+                                   "reaches from " +
+                                   number(reach_left) + " to " +
+                                   number(reach_right) + " m."));
+            const bool hanging = x > tolerance;
+            side_of_point.push_back(hanging ? 1. : -1.);
+            Probe probe;
+            for (const auto &cell : dofs.active_cell_iterators())
+              {
+                // (The top row of cells: vertices 2 and 3 on the surface.)
+                if (std::abs(cell->vertex(2)[1]) > tolerance ||
+                    (grid_xi(cell->center()) > 0) != hanging ||
+                    x < cell->vertex(2)[0] - tolerance ||
+                    x > cell->vertex(3)[0] + tolerance)
+                  continue;
+                Point<2> unit =
+                  mapping.transform_real_to_unit_cell(cell, Point<2>(x, 0.));
+                for (unsigned int c = 0; c < 2; ++c)
+                  unit[c] = std::clamp(unit[c], 0., 1.);
+                FEValues<2> at_point(mapping,
+                                     fe,
+                                     Quadrature<2>(std::vector<Point<2>>{unit},
+                                                   std::vector<double>{1.}),
+                                     update_values);
+                at_point.reinit(cell);
+                cell->get_dof_indices(indices);
+                for (unsigned int a = 0; a < n; ++a)
+                  {
+                    probe.dofs.push_back(indices[a]);
+                    probe.components.push_back(
+                      fe.system_to_component_index(a).first);
+                    probe.values.push_back(at_point.shape_value(a, 0));
+                  }
+                break;
+              }
+            AssertThrow(!probe.dofs.empty(), ExcInternalError());
+            probes.push_back(probe);
+          }
+      }
+      const unsigned int M = probes.size();
 
       // This rank's columns.
       const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(
@@ -390,7 +453,7 @@ namespace rupture
       const unsigned int first = std::size_t(N) * rank / ranks,
                          last  = std::size_t(N) * (rank + 1) / ranks;
       std::vector<double> columns;
-      columns.reserve(2 * std::size_t(last - first) * N);
+      columns.reserve(2 * std::size_t(last - first) * (N + M));
       Vector<double> field(n_dofs), right_hand_side(n_reduced);
       for (unsigned int j = first; j < last; ++j)
         {
@@ -429,6 +492,15 @@ namespace rupture
               columns.push_back(-(traction[0] * normal_direction[0] +
                                   traction[1] * normal_direction[1]));
             }
+          // The surface points' displacements.
+          for (const Probe &probe : probes)
+            {
+              std::array<double, 2> u = {{0, 0}};
+              for (std::size_t a = 0; a < probe.dofs.size(); ++a)
+                u[probe.components[a]] += probe.values[a] * field[probe.dofs[a]];
+              columns.push_back(u[0]);
+              columns.push_back(u[1]);
+            }
         }
 
       // All columns on every rank, stored by rows.
@@ -436,14 +508,23 @@ namespace rupture
         dealii::Utilities::MPI::all_gather(communicator, columns);
       shear.assign(std::size_t(N) * N, 0.);
       normal.assign(std::size_t(N) * N, 0.);
-      unsigned int j = 0;
+      surface.assign(2 * std::size_t(M) * N, 0.);
+      const std::size_t stride = 2 * std::size_t(N + M);
+      unsigned int      j      = 0;
       for (const auto &part : parts)
-        for (std::size_t c = 0; c < part.size() / (2 * N); ++c, ++j)
-          for (unsigned int i = 0; i < N; ++i)
-            {
-              shear[std::size_t(i) * N + j]  = part[(c * N + i) * 2];
-              normal[std::size_t(i) * N + j] = part[(c * N + i) * 2 + 1];
-            }
+        for (std::size_t c = 0; c < part.size() / stride; ++c, ++j)
+          {
+            const double *column = &part[c * stride];
+            for (unsigned int i = 0; i < N; ++i)
+              {
+                shear[std::size_t(i) * N + j]  = column[2 * i];
+                normal[std::size_t(i) * N + j] = column[2 * i + 1];
+              }
+            for (unsigned int k = 0; k < M; ++k)
+              for (unsigned int l = 0; l < 2; ++l)
+                surface[(2 * std::size_t(k) + l) * N + j] =
+                  column[2 * N + 2 * k + l];
+          }
     }
 
 
@@ -466,6 +547,27 @@ namespace rupture
       const std::size_t N = size();
       return std::vector<double>(normal.begin() + begin * N,
                                  normal.begin() + end * N);
+    }
+
+
+
+    std::array<double, 2>
+    PlaneStrainFiniteElements::surface_motion(
+      const unsigned int         k,
+      const std::vector<double> &fault_values,
+      const double               plate_value) const
+    {
+      const std::size_t     N = size();
+      std::array<double, 2> u;
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          const double *row = &surface[(2 * std::size_t(k) + c) * N];
+          double        sum = 0;
+          for (std::size_t j = 0; j < N; ++j)
+            sum += row[j] * fault_values[j];
+          u[c] = side_of_point[k] * 0.5 * direction[c] * plate_value + sum;
+        }
+      return u;
     }
 
 

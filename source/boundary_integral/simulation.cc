@@ -83,6 +83,8 @@ namespace rupture
             fe.thrust        = settings.thrust;
             fe.shear_modulus = settings.shear_modulus;
             fe.lambda        = settings.lambda;
+            for (const auto &station : settings.surface_stations)
+              fe.surface_points.push_back(station.second[0]);
             return std::make_unique<PlaneStrainFiniteElements>(fe,
                                                                communicator);
           }
@@ -142,7 +144,9 @@ namespace rupture
                          settings.stations,
                          settings.sampling,
                          settings.test_mode,
-                         communicator);
+                         communicator,
+                         settings.surface_stations,
+                         settings.plate_rate);
       TimeIntegration::DormandPrince::Settings tolerance = settings.integrator;
       tolerance.absolute_tolerance =
         fault.absolute_tolerances(settings.absolute_tolerance,

@@ -68,5 +68,46 @@ namespace rupture
       out << log10_state << "\n";
       return out.str();
     }
+
+
+    std::string
+    seas_surface_header(const std::string &location, const bool test_mode)
+    {
+      std::ostringstream out;
+      out << "# This is the file header:\n"
+          << "# problem = rupture surface station output (SCEC SEAS format)\n"
+          << "# code = rupture\n";
+      if (!test_mode)
+        {
+          const std::time_t now = std::time(nullptr);
+          out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
+              << "\n";
+        }
+      out << "# location = " << location << "\n"
+          << "# Column #1 = Time (s)\n"
+          << "# Column #2 = Displacement along x, horizontal (m)\n"
+          << "# Column #3 = Displacement along y, up (m)\n"
+          << "# Column #4 = Velocity along x (m/s)\n"
+          << "# Column #5 = Velocity along y (m/s)\n"
+          << "# The line below lists the names of the data fields\n"
+          << "t disp_1 disp_2 vel_1 vel_2\n"
+          << "# Here is the time-series data.\n";
+      return out.str();
+    }
+
+
+
+    std::string
+    seas_surface_row(const double                 time,
+                     const std::array<double, 2> &displacement,
+                     const std::array<double, 2> &velocity)
+    {
+      std::ostringstream out;
+      out << std::scientific << std::setprecision(15) << time
+          << std::setprecision(7) << " " << displacement[0] << " "
+          << displacement[1] << " " << velocity[0] << " " << velocity[1]
+          << "\n";
+      return out.str();
+    }
   } // namespace Output
 } // namespace rupture

@@ -14,6 +14,8 @@
 //   the body's normal stiffness (computed again by the test) times the
 //   slip deficit of the slip profile written at the same step (300 years,
 //   within 1e-3 of the change);
+// - the thrust run's surface stations 8 km to either side of the trace:
+//   their velocity is the rate of their displacement;
 // - on a vertical fault the normal stress stays 50 MPa through the events
 //   (the body's mirror symmetry: no normal stiffness).
 // On two ranks (the columns and rows shared out) the output is the same.
@@ -73,8 +75,12 @@ main(int argc, char **argv)
       std::vector<std::string> settings = common;
       settings.push_back("Boundary integral/Sense of slip=" + sense);
       if (sense == std::string("thrust"))
-        settings.push_back("Boundary integral/Profile interval between "
-                           "events=1.57788e9");
+        {
+          settings.push_back("Boundary integral/Profile interval between "
+                             "events=1.57788e9");
+          settings.push_back("Boundary integral/Surface stations=surfst_m08: "
+                             "-8000, 0; surfst_p08: 8000, 0");
+        }
       const int  code   = tests::run_in(sense, {prm}, settings);
       const auto events = tests::read_csv(sense + "/events.csv");
       std::printf("%s: exit code %d, %zu events\n",
@@ -158,6 +164,39 @@ main(int argc, char **argv)
                   "yes" :
                   "no");
   }
+
+  // The surface stations: the velocity is the rate of the displacement
+  // (between rows 50 and 60 years apart, in the first 300 years: within
+  // 1 % of the largest velocity).
+  for (const std::string name : {"surfst_m08", "surfst_p08"})
+    {
+      const auto rows = tests::read_statistics("thrust/" + name + ".dat");
+      double     largest = 0, mismatch = 0;
+      for (const auto &r : rows)
+        if (r[0] < 300 * year)
+          largest = std::max(largest, std::hypot(r[3], r[4]));
+      for (double t = 50 * year; t < 300 * year; t += 50 * year)
+        for (unsigned int c = 0; c < 2; ++c)
+          {
+            const double rate =
+              (at(rows, t + 10 * year, 1 + c) - at(rows, t, 1 + c)) /
+              (10 * year);
+            const double mean =
+              0.5 * (at(rows, t + 10 * year, 3 + c) + at(rows, t, 3 + c));
+            mismatch = std::max(mismatch, std::abs(rate - mean));
+          }
+      const auto &last = rows.back();
+      std::printf("%s: %zu rows, %zu columns; at the event's end (%.1f years) "
+                  "displaced by (%.3f, %.3f) m; velocity the displacement's "
+                  "rate within 1 %%: %s\n",
+                  name.c_str(),
+                  rows.size(),
+                  last.size(),
+                  last[0] / year,
+                  last[1],
+                  last[2],
+                  mismatch < 0.01 * largest ? "yes" : "no");
+    }
 
   // A vertical fault.
   std::vector<std::string> settings = common;

@@ -466,6 +466,31 @@ main(int argc, char **argv)
         finite_elements("Boundary integral/Domain size=700"));
   check("the finite-element stiffness with cells growing by 3",
         finite_elements("Boundary integral/Cell growth factor=3"));
+  // A dipping fault in a plane-strain body (SEAS BP3) with one more
+  // setting, its nodes 10 km apart.
+  const auto plane_strain = [](const std::string &setting) {
+    return std::vector<std::string>{
+      std::string(SOURCE_DIR) + "/../../prm/seas/bp3-qd-60.prm",
+      "--set",
+      "Output directory=earlier-run",
+      "--set",
+      "Boundary integral/Element size=10000",
+      "--set",
+      setting};
+  };
+  check("a dip with the antiplane half-space",
+        boundary_integral("Boundary integral/Dip=60"));
+  check("the plane-strain body with the Green's function",
+        plane_strain("Boundary integral/Stiffness=Green's function"));
+  check("the plane-strain body with a dip of 5 degrees",
+        plane_strain("Boundary integral/Dip=5"));
+  check("the plane-strain body with a P-wave speed below 2 / sqrt(3) times "
+        "the S-wave speed",
+        plane_strain("Material/P-wave speed=3900"));
+  check("the plane-strain body with a station off the dipping fault",
+        plane_strain("Fault/Output/Stations=off: 0, -5000"));
+  check("the plane-strain body with a station below the fault's end",
+        plane_strain("Fault/Output/Stations=deep: 25000, -43301.3"));
   auto resumed = boundary_integral("Boundary integral/Element size=400");
   resumed.push_back("--resume");
   check("the boundary-integral method continued without a checkpoint", resumed);

@@ -22,6 +22,19 @@ namespace rupture
   namespace BoundaryIntegral
   {
     /**
+     * The distance down the fault of the station @p name at @p point on
+     * the fault that dips at @p dip degrees from (0, 0) down to the
+     * distance @p extent (on a vertical fault: the depth -y); throws with
+     * a message naming <Fault/Output/Stations> where the point is not on
+     * it (within a metre on a dipping fault).
+     */
+    double
+    station_distance(const std::string &name,
+                     const Point<2>    &point,
+                     const double       dip,
+                     const double       extent);
+
+    /**
      * The series of a boundary-integral cycle run, appended to their files
      * as the run goes (never held in memory; rank 0 writes):
      * - statistics.dat: step, time, time step, largest slip rate, rejected
@@ -31,7 +44,10 @@ namespace rupture
      *   changes it, log10 state), interpolated linearly between the
      *   element centres;
      * - slip_profiles.dat: the slip at every element (a first row of their
-     *   depths).
+     *   depths);
+     * - <surface station>.dat: the displacement and velocity (x and y) of
+     *   the body's surface points (Stiffness::surface_motion(), named and
+     *   placed by @p surface_points), with the fault stations' rows.
      * The statistics and stations get a row after a step when the log10 of
      * the largest slip rate has changed by the sampling tolerance since the
      * last row or the sampling interval has passed (every step with a
@@ -59,8 +75,11 @@ namespace rupture
       CycleOutput(const Stiffness                                     &geometry,
                   const std::vector<std::pair<std::string, Point<2>>> &stations,
                   const Sampling                                      &sampling,
-                  const bool     test_mode,
-                  const MPI_Comm communicator);
+                  const bool                      test_mode,
+                  const MPI_Comm                  communicator,
+                  const std::vector<std::pair<std::string, Point<2>>>
+                              &surface_points = {},
+                  const double plate_rate     = 0);
 
       /**
        * Open the files in @p directory: with their headers, or
@@ -116,6 +135,11 @@ namespace rupture
       const bool           test_mode;
       const bool           root;
       std::vector<Station> stations;
+      /// The surface stations (their element is the body's surface point).
+      std::vector<Station> surface_stations;
+      const double         plate_rate;
+      /// Scratch: the fault's values relative to the plate's.
+      std::vector<double> relative;
       std::ofstream        statistics, profiles;
       std::string          statistics_path, profiles_path;
       // The sampling state.

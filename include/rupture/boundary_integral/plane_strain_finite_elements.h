@@ -5,6 +5,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,10 @@ namespace rupture
         bool thrust = true;
         /// The Lame constants (Pa).
         double shear_modulus = 1, lambda = 1;
+        /// The x (m) of points on the surface whose motion is wanted
+        /// (surface_motion(); x <= 0 on the footwall, x > 0 on the hanging
+        /// wall; at most the box's reach).
+        std::vector<double> surface_points;
       };
 
       /// Mesh, factorise and solve (collective). Throws on settings out of
@@ -123,6 +128,17 @@ namespace rupture
       normal_rows(const unsigned int begin,
                   const unsigned int end) const override;
 
+      unsigned int
+      n_surface_points() const override
+      {
+        return settings.surface_points.size();
+      }
+
+      std::array<double, 2>
+      surface_motion(const unsigned int         k,
+                     const std::vector<double> &fault_values,
+                     const double               plate_value) const override;
+
       std::string
       description() const override;
 
@@ -133,6 +149,14 @@ namespace rupture
       std::vector<double> node_distances, tributary;
       /// K and the normal stiffness, row by row (N x N each).
       std::vector<double> shear, normal;
+      /// The surface points' displacements per unit slip: for point k and
+      /// component c, the N values at 2 N k + N c.
+      std::vector<double> surface;
+      /// The slip direction (the hanging wall's relative to the
+      /// footwall).
+      std::array<double, 2> direction = {{0, 0}};
+      /// +1 for a surface point on the hanging wall, -1 on the footwall.
+      std::vector<double> side_of_point;
     };
   } // namespace BoundaryIntegral
 } // namespace rupture

@@ -64,6 +64,8 @@ namespace rupture
       std::string                                   law_name;
       Fault::EventCatalogue<2>                      events;
       std::vector<std::pair<std::string, Point<2>>> stations;
+      /// <Boundary integral/Surface stations> (points (x, 0)).
+      std::vector<std::pair<std::string, Point<2>>> surface_stations;
 
       // <Boundary integral>.
       std::string           geometry;

@@ -1,6 +1,7 @@
 #ifndef rupture_boundary_integral_stiffness_h
 #define rupture_boundary_integral_stiffness_h
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -70,6 +71,30 @@ namespace rupture
       changes_normal_stress() const
       {
         return false;
+      }
+
+      /// The number of points on the surface whose motion the body gives
+      /// (surface_motion()).
+      virtual unsigned int
+      n_surface_points() const
+      {
+        return 0;
+      }
+
+      /**
+       * The motion (x, y components) of surface point @p k when the fault
+       * has the values @p fault_values relative to the plate's (slip
+       * s_j - V_p t, or slip rate V_j - V_p) and the plate the value
+       * @p plate_value (V_p t, or V_p): the blocks' rigid motion (the
+       * hanging wall's +d/2, the footwall's -d/2 times @p plate_value, d
+       * the slip direction) plus that of the slip relative to the plate.
+       */
+      virtual std::array<double, 2>
+      surface_motion(const unsigned int /*k*/,
+                     const std::vector<double> & /*fault_values*/,
+                     const double /*plate_value*/) const
+      {
+        return {{0, 0}};
       }
 
       /// The fault's dip (degrees from the horizontal; 90: vertical). The

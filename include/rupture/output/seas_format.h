@@ -1,6 +1,7 @@
 #ifndef rupture_output_seas_format_h
 #define rupture_output_seas_format_h
 
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -35,6 +36,21 @@ namespace rupture
                      const double shear_stress,
                      const double log10_state,
                      const double normal_stress = std::nan(""));
+
+    /**
+     * The header of a surface station file of the SEAS BP3 layout: the
+     * location @p location and the columns t, disp_1, disp_2, vel_1,
+     * vel_2 (the displacement and velocity along x, horizontal, and y,
+     * up; m and m/s).
+     */
+    std::string
+    seas_surface_header(const std::string &location, const bool test_mode);
+
+    /// One data row of such a file.
+    std::string
+    seas_surface_row(const double                 time,
+                     const std::array<double, 2> &displacement,
+                     const std::array<double, 2> &velocity);
   } // namespace Output
 } // namespace rupture
 
