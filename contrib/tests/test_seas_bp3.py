@@ -82,3 +82,25 @@ def test_refuses_what_it_has_no_set_up_for(arguments, message, tmp_path):
                        capture_output=True, text=True)
     assert p.returncode != 0
     assert message in p.stderr
+
+
+def test_reuse_only_without_runs_says_so(tmp_path):
+    import os
+    path = os.path.join(os.path.dirname(__file__), "..", "seas-bp3")
+    p = subprocess.run([sys.executable, path, "--reuse-only",
+                        "--work-dir", str(tmp_path)],
+                       capture_output=True, text=True)
+    assert p.returncode != 0
+    assert "no finished run" in p.stderr
+
+
+def test_plots_each_case_at_its_finest_spacing(script, tmp_path):
+    bp3 = script("seas-bp3")
+    results = []
+    for h in (200, 100):
+        case = {"dip": 30, "sense": "normal", "h": h}
+        fake_run(tmp_path / ("dip30-normal-h%g-y1500" % h))
+        results.append({"case": case})
+    png = tmp_path / "bp3.png"
+    bp3.plot(results, str(tmp_path), 1500, str(png))
+    assert png.stat().st_size > 1000

@@ -2,6 +2,7 @@
 // one factorisation, one solve per fault node.
 
 #include <rupture/boundary_integral/antiplane_finite_elements.h>
+#include <rupture/boundary_integral/finite_element_grid.h>
 #include <rupture/boundary_integral/text.h>
 
 #include <deal.II/base/exceptions.h>
@@ -30,58 +31,17 @@ namespace rupture
   {
     using namespace dealii;
 
-    namespace
-    {
-
-      /// Cell sizes from @p first growing by @p growth until they add up to
-      /// at least @p length.
-      std::vector<double>
-      graded(const double first, const double growth, const double length)
-      {
-        std::vector<double> sizes;
-        double              sum = 0, size = first;
-        while (sum < length * (1 - 1e-12))
-          {
-            sizes.push_back(size);
-            sum += size;
-            size *= growth;
-          }
-        return sizes;
-      }
-    } // namespace
-
-
-
     AntiplaneFiniteElements::AntiplaneFiniteElements(
       const Settings &settings,
       const MPI_Comm  communicator)
       : settings(settings)
     {
       const double W = settings.fault_depth, p = settings.degree;
-      AssertThrow(std::isfinite(W) && W > 0,
-                  ExcMessage("<Boundary integral/Fault depth> is " + number(W) +
-                             ", but it must be > 0 (m)."));
-      AssertThrow(settings.degree >= 1 && settings.degree <= 4,
-                  ExcMessage("<Boundary integral/Finite-element degree> is " +
-                             std::to_string(settings.degree) +
-                             ", but it must be 1, 2, 3 or 4."));
-      AssertThrow(std::isfinite(settings.node_spacing) &&
-                    settings.node_spacing > 0 && p * settings.node_spacing <= W,
-                  ExcMessage("<Boundary integral/Element size> is " +
-                             number(settings.node_spacing) +
-                             ", but with finite elements it must be > 0 and "
-                             "at most <Fault depth> / <Finite-element "
-                             "degree> (m: the node spacing on the fault)."));
-      AssertThrow(std::isfinite(settings.domain_size) &&
-                    settings.domain_size >= 2 * W,
-                  ExcMessage("<Boundary integral/Domain size> is " +
-                             number(settings.domain_size) +
-                             ", but it must be at least twice <Fault depth> "
-                             "(m)."));
-      AssertThrow(settings.growth > 1 && settings.growth <= 2,
-                  ExcMessage("<Boundary integral/Cell growth factor> is " +
-                             number(settings.growth) +
-                             ", but it must be > 1 and at most 2."));
+      const double fault_cells = FiniteElementGrid::check(W,
+                                                          settings.degree,
+                                                          settings.node_spacing,
+                                                          settings.domain_size,
+                                                          settings.growth);
       AssertThrow(std::isfinite(settings.shear_modulus) &&
                     settings.shear_modulus > 0 &&
                     std::isfinite(settings.vertical_shear_modulus) &&
@@ -92,8 +52,6 @@ namespace rupture
                    C44 = (settings.vertical_shear_modulus > 0) ?
                            settings.vertical_shear_modulus :
                            settings.shear_modulus;
-      const double fault_cells =
-        std::ceil(W / (p * settings.node_spacing) - 1e-9);
       AssertThrow(fault_cells * p <= 20000,
                   ExcMessage("<Boundary integral/Element size> of " +
                              number(settings.node_spacing) + " m puts " +
@@ -106,12 +64,12 @@ namespace rupture
       // from the fault.
       const double        h = W / fault_cells;
       std::vector<double> across =
-        graded(h, settings.growth, settings.domain_size);
+        FiniteElementGrid::graded(h, settings.growth, settings.domain_size);
       std::vector<double>       down(static_cast<std::size_t>(fault_cells), h);
       const std::vector<double> below =
-        graded(h * settings.growth,
-               settings.growth,
-               std::max(settings.domain_size - W, h));
+        FiniteElementGrid::graded(h * settings.growth,
+                                  settings.growth,
+                                  std::max(settings.domain_size - W, h));
       down.insert(down.end(), below.begin(), below.end());
       AssertThrow(double(across.size()) * down.size() <= 4e6,
                   ExcMessage("<Boundary integral/Cell growth factor> of " +

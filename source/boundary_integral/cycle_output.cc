@@ -39,10 +39,10 @@ namespace rupture
         }
       // (On a dipping fault: the point's projection on the fault's line,
       // at most a metre from it.)
-      const double angle    = dip * M_PI / 180;
-      const double distance = point[0] * std::cos(angle) -
-                              point[1] * std::sin(angle),
-                   off = std::abs(point[0] * std::sin(angle) +
+      const double angle = dip * M_PI / 180;
+      const double distance =
+                     point[0] * std::cos(angle) - point[1] * std::sin(angle),
+                   off     = std::abs(point[0] * std::sin(angle) +
                                   point[1] * std::cos(angle));
       const double nearest = std::clamp(distance, 0., extent);
       AssertThrow(off < 1 && distance >= -1e-6 && distance <= extent,
@@ -284,7 +284,7 @@ namespace rupture
                 {
                   // The displacement from the slip relative to the plate's,
                   // the velocity from the slip rate relative to it.
-                  const unsigned int n = fault.size();
+                  const unsigned int                 n = fault.size();
                   std::vector<std::array<double, 2>> u, v;
                   relative.resize(n);
                   for (unsigned int i = 0; i < n; ++i)
@@ -354,8 +354,7 @@ namespace rupture
     {
       std::vector<double> state;
       BinaryIO::read(in, state);
-      AssertThrow(state.size() ==
-                    7 + stations.size() + surface_stations.size(),
+      AssertThrow(state.size() == 7 + stations.size() + surface_stations.size(),
                   dealii::ExcMessage(
                     "The checkpoint has another number of stations than "
                     "<Fault/Output/Stations> gives."));

@@ -432,8 +432,9 @@ namespace rupture
       AssertThrow(std::isfinite(plate_rate) && plate_rate > 0,
                   ExcMessage("<Boundary integral/Plate rate> must be > 0 "
                              "(m/s)."));
-      surface_stations = Utilities::parse_named_points<2>(
-        prm.get("Surface stations"), "Boundary integral/Surface stations");
+      surface_stations =
+        Utilities::parse_named_points<2>(prm.get("Surface stations"),
+                                         "Boundary integral/Surface stations");
       for (const auto &[name, point] : surface_stations)
         AssertThrow(point[1] == 0 && std::isfinite(point[0]),
                     ExcMessage("The surface station <" + name +

@@ -1,6 +1,7 @@
 // The fault's stiffness from a finite-element model of a plane-strain
 // body with a dipping fault: one factorisation, one solve per node pair.
 
+#include <rupture/boundary_integral/finite_element_grid.h>
 #include <rupture/boundary_integral/plane_strain_finite_elements.h>
 #include <rupture/boundary_integral/text.h>
 
@@ -34,21 +35,6 @@ namespace rupture
 
     namespace
     {
-      /// Cell sizes from @p first growing by @p growth until they add up to
-      /// at least @p length.
-      std::vector<double>
-      graded(const double first, const double growth, const double length)
-      {
-        std::vector<double> sizes;
-        double              sum = 0, size = first;
-        while (sum < length * (1 - 1e-12))
-          {
-            sizes.push_back(size);
-            sum += size;
-            size *= growth;
-          }
-        return sizes;
-      }
 
       /// Partial sums of @p sizes from @p start: the grid lines.
       std::vector<double>
@@ -77,30 +63,11 @@ namespace rupture
       : settings(settings)
     {
       const double W = settings.fault_extent, p = settings.degree;
-      AssertThrow(std::isfinite(W) && W > 0,
-                  ExcMessage("<Boundary integral/Fault depth> is " + number(W) +
-                             ", but it must be > 0 (m, along the dip)."));
-      AssertThrow(settings.degree >= 1 && settings.degree <= 4,
-                  ExcMessage("<Boundary integral/Finite-element degree> is " +
-                             std::to_string(settings.degree) +
-                             ", but it must be 1, 2, 3 or 4."));
-      AssertThrow(std::isfinite(settings.node_spacing) &&
-                    settings.node_spacing > 0 && p * settings.node_spacing <= W,
-                  ExcMessage("<Boundary integral/Element size> is " +
-                             number(settings.node_spacing) +
-                             ", but with finite elements it must be > 0 and "
-                             "at most <Fault depth> / <Finite-element "
-                             "degree> (m: the node spacing on the fault)."));
-      AssertThrow(std::isfinite(settings.domain_size) &&
-                    settings.domain_size >= 2 * W,
-                  ExcMessage("<Boundary integral/Domain size> is " +
-                             number(settings.domain_size) +
-                             ", but it must be at least twice <Fault depth> "
-                             "(m)."));
-      AssertThrow(settings.growth > 1 && settings.growth <= 2,
-                  ExcMessage("<Boundary integral/Cell growth factor> is " +
-                             number(settings.growth) +
-                             ", but it must be > 1 and at most 2."));
+      const double fault_cells = FiniteElementGrid::check(W,
+                                                          settings.degree,
+                                                          settings.node_spacing,
+                                                          settings.domain_size,
+                                                          settings.growth);
       AssertThrow(settings.dip >= 10 && settings.dip <= 90,
                   ExcMessage("<Boundary integral/Dip> is " +
                              number(settings.dip) +
@@ -112,8 +79,6 @@ namespace rupture
                   ExcMessage("The plane-strain body needs a shear modulus "
                              "> 0 and Poisson's ratio in (-1, 0.5) "
                              "(<Material>: density, S- and P-wave speeds)."));
-      const double fault_cells =
-        std::ceil(W / (p * settings.node_spacing) - 1e-9);
       AssertThrow(fault_cells * p <= 10000,
                   ExcMessage("<Boundary integral/Element size> of " +
                              number(settings.node_spacing) + " m puts " +
@@ -129,13 +94,14 @@ namespace rupture
                    cotangent = settings.dip == 90 ? 0. : 1 / std::tan(delta);
       const double              h = W / fault_cells; // along the dip
       const std::vector<double> across =
-        graded(h, settings.growth, settings.domain_size);
+        FiniteElementGrid::graded(h, settings.growth, settings.domain_size);
       std::vector<double> down(static_cast<std::size_t>(fault_cells), h * sine);
       {
         const std::vector<double> below =
-          graded(h * sine * settings.growth,
-                 settings.growth,
-                 std::max(settings.domain_size - W * sine, h));
+          FiniteElementGrid::graded(h * sine * settings.growth,
+                                    settings.growth,
+                                    std::max(settings.domain_size - W * sine,
+                                             h));
         down.insert(down.end(), below.begin(), below.end());
       }
       const double n_grid = 2. * across.size() * down.size();
@@ -399,8 +365,7 @@ namespace rupture
         const double       reach_left = left_end, reach_right = right_end;
         for (const double x : settings.surface_points)
           {
-            AssertThrow(std::isfinite(x) && x > reach_left &&
-                          x < reach_right,
+            AssertThrow(std::isfinite(x) && x > reach_left && x < reach_right,
                         ExcMessage("<Boundary integral/Surface stations>: x "
                                    "= " +
                                    number(x) +
@@ -497,7 +462,8 @@ namespace rupture
             {
               std::array<double, 2> u = {{0, 0}};
               for (std::size_t a = 0; a < probe.dofs.size(); ++a)
-                u[probe.components[a]] += probe.values[a] * field[probe.dofs[a]];
+                u[probe.components[a]] +=
+                  probe.values[a] * field[probe.dofs[a]];
               columns.push_back(u[0]);
               columns.push_back(u[1]);
             }

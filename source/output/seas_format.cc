@@ -11,23 +11,42 @@ namespace rupture
 {
   namespace Output
   {
+    namespace
+    {
+      /// The first lines of a header: the problem @p problem, the code,
+      /// the date (not in @p test_mode) and the location @p location.
+      void
+      header_start(std::ostream      &out,
+                   const std::string &problem,
+                   const std::string &location,
+                   const bool         test_mode)
+      {
+        out << "# This is the file header:\n"
+            << "# problem = " << problem << "\n"
+            << "# code = rupture\n";
+        if (!test_mode)
+          {
+            const std::time_t now = std::time(nullptr);
+            out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
+                << "\n";
+          }
+        out << "# location = " << location << "\n";
+      }
+    } // namespace
+
+
+
     std::string
     seas_station_header(const std::string &location,
                         const bool         test_mode,
                         const bool         normal_stress)
     {
       std::ostringstream out;
-      out << "# This is the file header:\n"
-          << "# problem = rupture station output (SCEC SEAS format)\n"
-          << "# code = rupture\n";
-      if (!test_mode)
-        {
-          const std::time_t now = std::time(nullptr);
-          out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
-              << "\n";
-        }
-      out << "# location = " << location << "\n"
-          << "# Column #1 = Time (s)\n"
+      header_start(out,
+                   "rupture station output (SCEC SEAS format)",
+                   location,
+                   test_mode);
+      out << "# Column #1 = Time (s)\n"
           << "# Column #2 = Slip (m)\n"
           << "# Column #3 = Slip rate (log10 m/s)\n"
           << "# Column #4 = Shear stress (MPa)\n";
@@ -74,17 +93,11 @@ namespace rupture
     seas_surface_header(const std::string &location, const bool test_mode)
     {
       std::ostringstream out;
-      out << "# This is the file header:\n"
-          << "# problem = rupture surface station output (SCEC SEAS format)\n"
-          << "# code = rupture\n";
-      if (!test_mode)
-        {
-          const std::time_t now = std::time(nullptr);
-          out << "# date = " << std::put_time(std::gmtime(&now), "%Y/%m/%d")
-              << "\n";
-        }
-      out << "# location = " << location << "\n"
-          << "# Column #1 = Time (s)\n"
+      header_start(out,
+                   "rupture surface station output (SCEC SEAS format)",
+                   location,
+                   test_mode);
+      out << "# Column #1 = Time (s)\n"
           << "# Column #2 = Displacement along x, horizontal (m)\n"
           << "# Column #3 = Displacement along y, up (m)\n"
           << "# Column #4 = Velocity along x (m/s)\n"

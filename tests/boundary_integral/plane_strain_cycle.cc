@@ -170,7 +170,7 @@ main(int argc, char **argv)
   // 1 % of the largest velocity).
   for (const std::string name : {"surfst_m08", "surfst_p08"})
     {
-      const auto rows = tests::read_statistics("thrust/" + name + ".dat");
+      const auto rows    = tests::read_statistics("thrust/" + name + ".dat");
       double     largest = 0, mismatch = 0;
       for (const auto &r : rows)
         if (r[0] < 300 * year)

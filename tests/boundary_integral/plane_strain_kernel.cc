@@ -158,55 +158,58 @@ main(int argc, char **argv)
       for (const double h : {500., 250.})
         {
           PlaneStrainFiniteElements::Settings s = settings(h, dip, true);
-          s.fault_extent   = 10e3;
-          s.domain_size    = 400e3;
-          s.growth         = 1.3;
-          s.surface_points = surface;
+          s.fault_extent                        = 10e3;
+          s.domain_size                         = 400e3;
+          s.growth                              = 1.3;
+          s.surface_points                      = surface;
           const PlaneStrainFiniteElements fault(s, MPI_COMM_WORLD);
           const std::vector<double>       slip(fault.size(), 1.);
-          const double                    delta = dip * M_PI / 180,
-                                          d     = 10e3 * std::sin(delta);
-          double                          error = 0, rigid = 0;
-          std::array<double, 2>           offset = {{0, 0}};
+          const double delta = dip * M_PI / 180, d = 10e3 * std::sin(delta);
+          double       error = 0, rigid = 0;
+          std::array<double, 2> offset = {{0, 0}};
           for (unsigned int k = 0; k < surface.size(); ++k)
             {
               const double x = surface[k], zeta = (x - d / std::tan(delta)) / d;
-              const double sign   = x > 0 ? 1 : -1;
-              const double angle  = std::atan(zeta) - M_PI / 2 * sign;
-              const double exact0 = (std::cos(delta) * angle +
-                                     (std::sin(delta) - zeta * std::cos(delta)) /
-                                       (1 + zeta * zeta)) /
-                                    M_PI,
-                           exact1 = -(std::sin(delta) * angle +
-                                      (std::cos(delta) + zeta * std::sin(delta)) /
-                                        (1 + zeta * zeta)) /
-                                    M_PI;
+              const double sign  = x > 0 ? 1 : -1;
+              const double angle = std::atan(zeta) - M_PI / 2 * sign;
+              const double exact0 =
+                             (std::cos(delta) * angle +
+                              (std::sin(delta) - zeta * std::cos(delta)) /
+                                (1 + zeta * zeta)) /
+                             M_PI,
+                           exact1 =
+                             -(std::sin(delta) * angle +
+                               (std::cos(delta) + zeta * std::sin(delta)) /
+                                 (1 + zeta * zeta)) /
+                             M_PI;
               const auto u = fault.surface_motion(k, slip, 0.);
               if (k == 0)
                 offset = {{u[0] - exact0, u[1] - exact1}};
               error = std::max(error,
                                std::max(std::abs(u[0] - exact0 - offset[0]),
                                         std::abs(u[1] - exact1 - offset[1])));
-              const auto r = fault.surface_motion(
-                k, std::vector<double>(fault.size(), 0.), 1.);
-              rigid = std::max(rigid,
-                               std::max(std::abs(r[0] + sign * 0.5 *
-                                                          std::cos(delta)),
-                                        std::abs(r[1] - sign * 0.5 *
-                                                          std::sin(delta))));
+              const auto r =
+                fault.surface_motion(k,
+                                     std::vector<double>(fault.size(), 0.),
+                                     1.);
+              rigid =
+                std::max(rigid,
+                         std::max(std::abs(r[0] + sign * 0.5 * std::cos(delta)),
+                                  std::abs(r[1] -
+                                           sign * 0.5 * std::sin(delta))));
             }
-          std::printf("dip %2.0f, nodes %5.1f m apart: the surface's "
-                      "displacement relative to x = -16 km within %.1e s of the "
-                      "half-space's%s; "
-                      "the rigid motion +-d / 2 within 1e-12: %s\n",
-                      dip,
-                      h,
-                      error,
-                      previous > 0 ?
-                        (error < 0.7 * previous ? " (smaller)" :
-                                                  " (NOT smaller)") :
-                        "",
-                      rigid < 1e-12 ? "yes" : "no");
+          std::printf(
+            "dip %2.0f, nodes %5.1f m apart: the surface's "
+            "displacement relative to x = -16 km within %.1e s of the "
+            "half-space's%s; "
+            "the rigid motion +-d / 2 within 1e-12: %s\n",
+            dip,
+            h,
+            error,
+            previous > 0 ?
+              (error < 0.7 * previous ? " (smaller)" : " (NOT smaller)") :
+              "",
+            rigid < 1e-12 ? "yes" : "no");
           previous = error;
         }
     }

@@ -469,14 +469,14 @@ main(int argc, char **argv)
   // A dipping fault in a plane-strain body (SEAS BP3) with one more
   // setting, its nodes 10 km apart.
   const auto plane_strain = [](const std::string &setting) {
-    return std::vector<std::string>{
-      std::string(SOURCE_DIR) + "/../../prm/seas/bp3-qd-60.prm",
-      "--set",
-      "Output directory=earlier-run",
-      "--set",
-      "Boundary integral/Element size=10000",
-      "--set",
-      setting};
+    return std::vector<std::string>{std::string(SOURCE_DIR) +
+                                      "/../../prm/seas/bp3-qd-60.prm",
+                                    "--set",
+                                    "Output directory=earlier-run",
+                                    "--set",
+                                    "Boundary integral/Element size=10000",
+                                    "--set",
+                                    setting};
   };
   check("a dip with the antiplane half-space",
         boundary_integral("Boundary integral/Dip=60"));

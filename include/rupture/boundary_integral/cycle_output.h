@@ -75,8 +75,8 @@ namespace rupture
       CycleOutput(const Stiffness                                     &geometry,
                   const std::vector<std::pair<std::string, Point<2>>> &stations,
                   const Sampling                                      &sampling,
-                  const bool                      test_mode,
-                  const MPI_Comm                  communicator,
+                  const bool     test_mode,
+                  const MPI_Comm communicator,
                   const std::vector<std::pair<std::string, Point<2>>>
                               &surface_points = {},
                   const double plate_rate     = 0);
@@ -140,8 +140,8 @@ namespace rupture
       const double         plate_rate;
       /// Scratch: the fault's values relative to the plate's.
       std::vector<double> relative;
-      std::ofstream        statistics, profiles;
-      std::string          statistics_path, profiles_path;
+      std::ofstream       statistics, profiles;
+      std::string         statistics_path, profiles_path;
       // The sampling state.
       double last_row_rate = -1, last_row_time = 0, last_profile = -1e300;
       long   rows_step = -1, profile_step = -1;
