@@ -45,7 +45,7 @@ namespace rupture
                    off     = std::abs(point[0] * std::sin(angle) +
                                   point[1] * std::cos(angle));
       const double nearest = std::clamp(distance, 0., extent);
-      AssertThrow(off < 1 && distance >= -1e-6 && distance <= extent,
+      AssertThrow(off < 1 && distance >= -1 && distance <= extent + 1,
                   dealii::ExcMessage(
                     "The station <" + name +
                     "> of <Fault/Output/Stations> is not on the fault: "
@@ -57,7 +57,7 @@ namespace rupture
                     "nearest point of it is (" +
                     number(nearest * std::cos(angle)) + ", " +
                     number(-nearest * std::sin(angle)) + "))."));
-      return std::max(distance, 0.);
+      return nearest;
     }
 
 
@@ -293,7 +293,7 @@ namespace rupture
                     u.push_back(
                       geometry.surface_motion(k, relative, plate_rate * t));
                   for (unsigned int i = 0; i < n; ++i)
-                    relative[i] = fault.slip_rate(i) - plate_rate;
+                    relative[i] = fault.signed_slip_rate(i) - plate_rate;
                   for (unsigned int k = 0; k < surface_stations.size(); ++k)
                     v.push_back(
                       geometry.surface_motion(k, relative, plate_rate));

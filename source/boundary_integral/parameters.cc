@@ -311,6 +311,7 @@ namespace rupture
       if (entries.symmetry.empty() ||
           entries.symmetry[0] == Material::Symmetry::isotropic)
         return;
+      anisotropic                       = true;
       const std::string           which = " of material 0 (" + names[0] + ")";
       const Material::VoigtMatrix c =
         Material::anisotropic_stiffness(entries, 0, which);
@@ -479,10 +480,11 @@ namespace rupture
                                  "finite elements: set <Stiffness> = finite "
                                  "elements (there is no Green's function of "
                                  "it in rupture)."));
-          AssertThrow(vertical_shear_modulus == shear_modulus,
+          AssertThrow(!anisotropic,
                       ExcMessage("<Boundary integral/Geometry> = plane "
                                  "strain half-space takes an isotropic body: "
-                                 "the first material must be isotropic."));
+                                 "the first material must be isotropic "
+                                 "(<Material/Symmetry>)."));
           AssertThrow(std::isfinite(dip) && dip >= 10 && dip <= 90,
                       ExcMessage("<Boundary integral/Dip> is " + number(dip) +
                                  ", but it must lie between 10 and 90 "
@@ -497,6 +499,24 @@ namespace rupture
       // (The stations, before the body's stiffness is computed.)
       for (const auto &[name, point] : stations)
         station_distance(name, point, dip, fault_depth);
+      for (const auto &[name, point] : surface_stations)
+        {
+          AssertThrow(std::abs(point[0]) < domain_size,
+                      ExcMessage("The surface station <" + name +
+                                 "> of <Boundary integral/Surface stations> "
+                                 "is at x = " +
+                                 number(point[0]) +
+                                 " m, but the meshed surface reaches to "
+                                 "+-<Domain size> = " +
+                                 number(domain_size) + " m."));
+          for (const auto &fault_station : stations)
+            AssertThrow(fault_station.first != name,
+                        ExcMessage("The surface station <" + name +
+                                   "> has the name of a station of "
+                                   "<Fault/Output/Stations>: both would "
+                                   "write " +
+                                   name + ".dat. Give another name."));
+        }
       AssertThrow(integrator.minimum_step > 0 &&
                     integrator.maximum_step >= integrator.minimum_step &&
                     integrator.maximum_growth > 1,

@@ -4,6 +4,7 @@
 
 #include <rupture/base/binary_io.h>
 #include <rupture/boundary_integral/quasi_dynamic_fault.h>
+#include <rupture/boundary_integral/text.h>
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -38,6 +39,8 @@ namespace rupture
       , velocity(n, plate_rate)
       , traction(initial_shear)
       , normal_now(normal_stress)
+      , coupled(geometry.changes_normal_stress())
+      , signed_velocity(n, plate_rate)
       , event_start(n, 0.)
       , event_peak(n, 0.)
     {
@@ -80,10 +83,10 @@ namespace rupture
               row_end   = end;
             }
         }
-      stiffness        = geometry.rows(row_begin, row_end);
-      normal_stiffness = geometry.normal_rows(row_begin, row_end);
-      AssertThrow(normal_stiffness.empty() ||
-                    normal_stiffness.size() == stiffness.size(),
+      stiffness = geometry.rows(row_begin, row_end);
+      if (coupled)
+        normal_stiffness = geometry.normal_rows(row_begin, row_end);
+      AssertThrow(normal_stiffness.size() == (coupled ? stiffness.size() : 0),
                   ExcInternalError());
     }
 
@@ -214,7 +217,7 @@ namespace rupture
           // (The normal stress changes with the slip where the body
           // couples them, as the shear traction does.)
           double normal_stress = sigma[i];
-          if (!normal_stiffness.empty())
+          if (coupled)
             {
               const double *normal_row = &normal_stiffness[std::size_t(r) * n];
               double        change     = 0;
@@ -222,16 +225,23 @@ namespace rupture
                 change += normal_row[k] * relative[k];
               normal_stress += change;
               normal_now[i] = normal_stress;
-              AssertThrow(normal_stress > 0,
-                          ExcMessage(
-                            "The fault would open at " +
-                            std::to_string(geometry.depth(i)) +
-                            " m down the fault at t = " + std::to_string(t) +
-                            " s: the slip has made its normal stress " +
-                            std::to_string(normal_stress) +
-                            " Pa, and the boundary-integral method models "
-                            "a fault that stays closed. Give a larger "
-                            "<Boundary integral/Normal stress>."));
+              // (A fault that would open: rates that are not numbers, so
+              // that the integrator rejects the step and tries a smaller
+              // one; remembered for the message if none helps.)
+              if (!(normal_stress > 0))
+                {
+                  // (Not a number: a stage after one that opened.)
+                  if (normal_stress < opening.first)
+                    {
+                      opening    = {normal_stress, t};
+                      opening_at = i;
+                    }
+                  for (unsigned int b = 0; b < 1 + n_variables; ++b)
+                    local[b * std::size_t(owned) + r] =
+                      std::numeric_limits<double>::quiet_NaN();
+                  traction[i] = std::numeric_limits<double>::quiet_NaN();
+                  continue;
+                }
             }
           unpack_state(i, y, state);
           const double V = solve_rate(i, tau, normal_stress, state);
@@ -287,7 +297,8 @@ namespace rupture
                                       MPI_DOUBLE,
                                       communicator);
       AssertThrowMPI(ierr);
-      if (!normal_stiffness.empty())
+      opening = {std::numeric_limits<double>::infinity(), 0.};
+      if (coupled)
         {
           std::vector<double> mine(normal_now.begin() + row_begin,
                                    normal_now.begin() + row_end);
@@ -303,14 +314,47 @@ namespace rupture
         }
       for (unsigned int i = 0; i < n; ++i)
         {
-          current[i]  = y[i];
-          velocity[i] = std::abs(rate[i]);
+          current[i]         = y[i];
+          velocity[i]        = std::abs(rate[i]);
+          signed_velocity[i] = rate[i];
           for (unsigned int v = 0; v < n_variables; ++v)
             {
               const double value = y[(1 + v) * std::size_t(n) + i];
               variables[v][i]    = logarithmic[v] ? std::exp(value) : value;
             }
         }
+    }
+
+
+
+    std::string
+    QuasiDynamicFault::opening_report() const
+    {
+      // (The lowest normal stress of the open trial stages on any rank.)
+      struct
+      {
+        double value;
+        int    rank;
+      } mine         = {opening.first,
+                        int(dealii::Utilities::MPI::this_mpi_process(communicator))},
+        lowest       = mine;
+      const int ierr = MPI_Allreduce(
+        &mine, &lowest, 1, MPI_DOUBLE_INT, MPI_MINLOC, communicator);
+      AssertThrowMPI(ierr);
+      if (!(lowest.value <= 0))
+        return "";
+      double    where[2] = {opening.second,
+                         opening_at < n ? geometry.depth(opening_at) : 0.};
+      const int error =
+        MPI_Bcast(where, 2, MPI_DOUBLE, lowest.rank, communicator);
+      AssertThrowMPI(error);
+      return "The fault would open: at t = " + number(where[0]) +
+             " s the slip made the normal stress " + number(lowest.value) +
+             " Pa at " + number(std::abs(where[1])) +
+             " m down the fault, in every step the integrator tried down to "
+             "the minimum time step. The boundary-integral method models a "
+             "fault that stays closed: give a larger <Boundary "
+             "integral/Normal stress>.";
     }
 
 
@@ -341,7 +385,7 @@ namespace rupture
         current, velocity, traction, event_start, event_peak};
       // (The normal stress only where it changes: the checkpoints of the
       // antiplane problem stay as they were.)
-      if (!normal_stiffness.empty())
+      if (coupled)
         fields.push_back(normal_now);
       BinaryIO::write(out, fields);
       BinaryIO::write(out, variables);
@@ -355,7 +399,7 @@ namespace rupture
       std::vector<std::vector<double>> fields, state;
       BinaryIO::read(in, fields);
       BinaryIO::read(in, state);
-      AssertThrow(fields.size() == (normal_stiffness.empty() ? 5u : 6u) &&
+      AssertThrow(fields.size() == (coupled ? 6u : 5u) &&
                     state.size() == n_variables,
                   ExcMessage("The checkpoint's fault is damaged."));
       for (const auto &f : fields)
@@ -368,9 +412,10 @@ namespace rupture
       traction    = fields[2];
       event_start = fields[3];
       event_peak  = fields[4];
-      if (!normal_stiffness.empty())
+      if (coupled)
         normal_now = fields[5];
-      variables = state;
+      signed_velocity = velocity;
+      variables       = state;
     }
 
 

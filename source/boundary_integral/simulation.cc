@@ -264,7 +264,18 @@ namespace rupture
       double &t = clock.t;
       while (t < end_time)
         {
-          clock.last_dt = integrator.advance(t, y, clock.dt, end_time);
+          try
+            {
+              clock.last_dt = integrator.advance(t, y, clock.dt, end_time);
+            }
+          catch (const ExceptionBase &)
+            {
+              // (Every rank fails the same step; if the fault would have
+              // opened in the steps tried, that is what to say.)
+              const std::string report = fault.opening_report();
+              AssertThrow(report.empty(), ExcMessage(report));
+              throw;
+            }
           ++clock.steps;
           clock.dt_min = std::min(clock.dt_min, clock.last_dt);
           clock.dt_max = std::max(clock.dt_max, clock.last_dt);

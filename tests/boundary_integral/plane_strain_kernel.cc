@@ -127,9 +127,16 @@ main(int argc, char **argv)
           const PlaneStrainFiniteElements fault(settings(h, dip, true),
                                                 MPI_COMM_WORLD);
           const Errors                    e = measure(fault);
+          // (A normal stress at round-off, on the vertical fault, as a
+          // bound: its digits differ between machines.)
+          char normal[32];
+          if (e.normal < 1e-10)
+            std::snprintf(normal, sizeof(normal), "1e-10");
+          else
+            std::snprintf(normal, sizeof(normal), "%.1e", e.normal);
           std::printf(
             "dip %2.0f, nodes %6.1f m apart (%3u): shear traction within "
-            "%.1e of -dtau over 0.75 a%s, normal stress within %.1e of 0; "
+            "%.1e of -dtau over 0.75 a%s, normal stress within %s of 0; "
             "w_i K_ij = w_j K_ji within 1e-9: %s; K_ii < 0: %s\n",
             dip,
             h,
@@ -138,7 +145,7 @@ main(int argc, char **argv)
             previous > 0 ?
               (e.shear < 0.7 * previous ? " (smaller)" : " (NOT smaller)") :
               "",
-            e.normal,
+            normal,
             e.asymmetry < 1e-9 ? "yes" : "no",
             e.largest_diagonal < 0 ? "yes" : "no");
           if (dip == 90)

@@ -491,6 +491,12 @@ main(int argc, char **argv)
         plane_strain("Fault/Output/Stations=off: 0, -5000"));
   check("the plane-strain body with a station below the fault's end",
         plane_strain("Fault/Output/Stations=deep: 25000, -43301.3"));
+  check("the plane-strain body with a surface station beyond the box",
+        plane_strain("Boundary integral/Surface stations=far: 500000, 0"));
+  check("the plane-strain body with a surface station named as a fault "
+        "station",
+        plane_strain("Boundary integral/Surface stations=fltst_dp100: 100, "
+                     "0"));
   auto resumed = boundary_integral("Boundary integral/Element size=400");
   resumed.push_back("--resume");
   check("the boundary-integral method continued without a checkpoint", resumed);

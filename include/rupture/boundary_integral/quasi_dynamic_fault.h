@@ -8,6 +8,9 @@
 #include <deal.II/base/mpi.h>
 
 #include <iosfwd>
+#include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace rupture
@@ -124,8 +127,24 @@ namespace rupture
       bool
       normal_stress_changes() const
       {
-        return !normal_stiffness.empty();
+        return coupled;
       }
+      /// The slip rate of element i with its sign (negative: against the
+      /// plates' sense).
+      double
+      signed_slip_rate(const unsigned int i) const
+      {
+        return signed_velocity[i];
+      }
+
+      /**
+       * Where the normal stress fell to zero or below in the steps tried
+       * since the last accepted one (their rates are not numbers, which
+       * makes the integrator reject them): a message for the user, or
+       * empty if it did not. Collective.
+       */
+      std::string
+      opening_report() const;
       /// The law's first state variable (as the law defines it).
       double
       state(const unsigned int i) const;
@@ -191,7 +210,17 @@ namespace rupture
       /// Rows per rank, for the exchange of the rates.
       std::vector<int> counts, offsets;
       // The last evaluate().
-      std::vector<double>              current, velocity, traction, normal_now;
+      std::vector<double> current, velocity, traction, normal_now;
+      /// Whether the body couples the normal stress to the slip (the same
+      /// on every rank).
+      const bool coupled;
+      /// The last accepted slip rates with their signs.
+      std::vector<double> signed_velocity;
+      /// The lowest normal stress (<= 0) of the stages tried since the last
+      /// accepted step and its time, and where (this rank's rows).
+      std::pair<double, double> opening =
+        {std::numeric_limits<double>::infinity(), 0.};
+      unsigned int                     opening_at = 0;
       std::vector<std::vector<double>> variables;
       // The open event.
       std::vector<double> event_start, event_peak;

@@ -57,7 +57,9 @@ namespace rupture
       double shear_modulus          = 0;
       double vertical_shear_modulus = 0;
       /// Lame's first constant (Pa), for the plane-strain body.
-      double                                        lambda            = 0;
+      double lambda = 0;
+      /// Whether the first material is anisotropic.
+      bool                                          anisotropic       = false;
       double                                        radiation_damping = 0;
       double                                        plate_rate        = 0;
       std::unique_ptr<Friction::Interface>          law;
