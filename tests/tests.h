@@ -77,6 +77,29 @@ namespace tests
   }
 
   /**
+   * A boundary-integral run of @p prm in @p directory as if it had been
+   * killed after the checkpoint before its last one (the newest removed,
+   * the previous put in its place), continued by --resume with the run's
+   * @p settings; the screen output is shown if @p verbose.
+   */
+  inline int
+  resume_from_previous_checkpoint(const std::string              &prm,
+                                  const std::string              &directory,
+                                  const std::vector<std::string> &settings,
+                                  const bool verbose = false)
+  {
+    namespace fs            = std::filesystem;
+    const std::string where = directory + "/checkpoint/boundary_integral";
+    fs::remove(where + ".bin");
+    fs::rename(where + ".previous.bin", where + ".bin");
+    std::vector<std::string> resume = {prm, "--resume"};
+    for (const auto &s : settings)
+      resume.insert(resume.end(), {"--set", s});
+    resume.insert(resume.end(), {"--set", "Output directory=" + directory});
+    return run(resume, verbose);
+  }
+
+  /**
    * Run rupture with @p arguments, swallowing the screen output and
    * returning what it wrote to std::cerr in @p errors.
    */

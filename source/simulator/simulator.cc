@@ -82,14 +82,15 @@ namespace rupture
           << dealii::Utilities::MPI::n_mpi_processes(communicator)
           << " MPI rank(s)\n";
     if (mesh_refinement.enabled() && mesh_refinement.levels > 2)
-      pcout << "   Note: <Mesh refinement/Levels> = " << mesh_refinement.levels
-            << ". Below base cells more than four times the front's, TPV3's "
-               "final slip came out 5.8 % too large (three levels below 750 "
-               "m cells), and 4.1 % with a fixed mesh of the same finest "
-               "cells in the same base: the coarse cells around the fine "
-               "ones cause it, not the adaptation. Two levels below base "
-               "cells at most four times the front's were within 0.5 % "
-               "(doc/performance.md, \"TPV3 with three levels\").\n";
+      pcout
+        << "   Note: <Mesh refinement/Levels> = " << mesh_refinement.levels
+        << ". Below base cells more than four times the front's, TPV3's "
+           "final slip came out 5.8 % too large (three levels below 750 "
+           "m cells), and 4.1 % with a fixed mesh of the same finest "
+           "cells in the same base: the coarse cells around the fine "
+           "ones cause most of it, not the adaptation. Two levels below base "
+           "cells at most four times the front's were within 0.5 % "
+           "(doc/performance.md, \"TPV3 with three levels\").\n";
 
     record_memory("start");
     {

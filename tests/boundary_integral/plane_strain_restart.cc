@@ -17,7 +17,6 @@
 #include "../tests.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -25,8 +24,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  namespace fs = std::filesystem;
-  const std::string prm =
+  const std::string                        prm =
     std::string(SOURCE_DIR) + "/../../prm/seas/bp3-qd-60.prm";
   const std::vector<std::string> common = {
     "Boundary integral/Element size=2000",
@@ -50,14 +48,8 @@ main(int argc, char **argv)
               steps.size(),
               steps.back()[0] > 600 ? "yes" : "no");
   // Killed after the checkpoint before the last.
-  fs::remove("stopped/checkpoint/boundary_integral.bin");
-  fs::rename("stopped/checkpoint/boundary_integral.previous.bin",
-             "stopped/checkpoint/boundary_integral.bin");
-  std::vector<std::string> resume = {prm, "--resume"};
-  for (const auto &s : stopped)
-    resume.insert(resume.end(), {"--set", s});
-  resume.insert(resume.end(), {"--set", "Output directory=stopped"});
-  std::printf("continued: exit code %d\n", tests::run(resume));
+  std::printf("continued: exit code %d\n",
+              tests::resume_from_previous_checkpoint(prm, "stopped", stopped));
   for (const std::string file : {"statistics.dat",
                                  "fltst_dp100.dat",
                                  "surfst_m080.dat",

@@ -15,7 +15,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -23,7 +22,6 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  namespace fs          = std::filesystem;
   const std::string prm = std::string(SOURCE_DIR) + "/inputs/spring_slider.prm";
   const std::vector<std::string> profiles = {
     "Boundary integral/Profile interval between events=1e7",
@@ -35,15 +33,10 @@ main(int argc, char **argv)
   std::printf("with checkpoints: exit code %d\n",
               tests::run_in("stopped", {prm}, stopped));
   // Killed after the checkpoint before the last.
-  fs::remove("stopped/checkpoint/boundary_integral.bin");
-  fs::rename("stopped/checkpoint/boundary_integral.previous.bin",
-             "stopped/checkpoint/boundary_integral.bin");
-  std::vector<std::string> resume = {prm, "--resume"};
-  for (const auto &s : stopped)
-    resume.insert(resume.end(), {"--set", s});
-  resume.insert(resume.end(), {"--set", "Output directory=stopped"});
   std::printf("continued (its screen output):\n");
-  std::printf("continued: exit code %d\n", tests::run(resume, true));
+  std::printf(
+    "continued: exit code %d\n",
+    tests::resume_from_previous_checkpoint(prm, "stopped", stopped, true));
 
   // Where the checkpoint was: step 1600, in the third event.
   const auto rows = tests::read_statistics("full/statistics.dat");

@@ -111,8 +111,9 @@ namespace rupture
        * cells (the fields carried through each). Then @p reflag (if given)
        * may flag the cells of the next level of the same adaptation and
        * say whether it flagged any: the fields go on through that mesh too
-       * (an adaptation of several levels carries them once, through meshes
-       * whose DoFs alone are set up). @p setup is called once
+       * (an adaptation of several levels carries them as each cell's
+       * values through meshes without DoFs: CellWiseFields). @p setup is
+       * called once
        * the mesh is final, before the fields are interpolated to it: it
        * distributes the DoFs and sets up what depends on them (step-75's
        * setup_system()). Times its parts in @p timer ("Refinement: ...").
