@@ -30,8 +30,11 @@ namespace rupture
      * are only refined carries the fields exactly (their
      * values at a hanging node are then their own polynomial's); where a
      * family was coarsened next to finer cells the values at the hanging
-     * nodes are set right only by the constraints of the final mesh, which
-     * the caller distributes.
+     * nodes are set right only by that mesh's constraints, which the caller
+     * distributes: on the final mesh, or, if a later mesh may refine the
+     * coarse cell (the node would stop hanging with two values), on the
+     * coarsened mesh's DoFs before going on (write(), distribute, and a new
+     * CellWiseFields, as Discretization::refine() does).
      */
     template <int dim>
     class CellWiseFields
