@@ -218,7 +218,8 @@ namespace rupture
               "on fault, " + number(s.depth / 1e3) +
                 (geometry.dip() == 90 ? " km depth" : " km down-dip"),
               test_mode,
-              normal_stress);
+              normal_stress,
+              state_name);
         }
       for (unsigned int k = 0; k < surface_stations.size(); ++k)
         {
@@ -274,7 +275,7 @@ namespace rupture
                     mix(fault.slip(i), fault.slip(j)),
                     mix(fault.slip_rate(i), fault.slip_rate(j)),
                     mix(fault.shear_stress(i), fault.shear_stress(j)) / 1e6,
-                    mix(std::log10(fault.state(i)), std::log10(fault.state(j))),
+                    mix(fault.state(i), fault.state(j)),
                     fault.normal_stress_changes() ?
                       mix(fault.normal_stress(i), fault.normal_stress(j)) /
                         1e6 :

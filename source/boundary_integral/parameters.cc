@@ -391,8 +391,8 @@ namespace rupture
                   ExcMessage("<Fault/Friction law> = " + law_name +
                              " gives no rate of change of its state, which "
                              "the boundary-integral method integrates. "
-                             "Allowed with <Method> = boundary integral: "
-                             "rate and state."));
+                             "Allowed with <Method> = boundary integral: " +
+                             Friction::laws_with_state_rate() + "."));
       prm.enter_subsection("Output");
       events.parse_parameters(prm);
       sampling.event_rate = prm.get_double("Event slip rate");

@@ -362,8 +362,21 @@ namespace rupture
     double
     QuasiDynamicFault::state(const unsigned int i) const
     {
-      return n_variables > 0 ? variables[0][i] :
-                               std::numeric_limits<double>::quiet_NaN();
+      if (n_variables == 0)
+        return std::numeric_limits<double>::quiet_NaN();
+      Friction::State s;
+      for (unsigned int v = 0; v < n_variables; ++v)
+        s.variables.push_back(variables[v][i]);
+      return law.state_output(s).at(0);
+    }
+
+
+
+    std::string
+    QuasiDynamicFault::state_name() const
+    {
+      const auto names = law.state_names();
+      return names.empty() ? std::string() : names[0];
     }
 
 

@@ -133,20 +133,21 @@ namespace rupture
       const double eta    = settings.radiation_damping;
       auto        &events = settings.events;
 
-      QuasiDynamicFault                        fault(geometry,
+      QuasiDynamicFault fault(geometry,
                               *settings.law,
                               sigma,
                               tau0,
                               eta,
                               settings.plate_rate,
                               communicator);
-      CycleOutput                              output(geometry,
+      CycleOutput       output(geometry,
                          settings.stations,
                          settings.sampling,
                          settings.test_mode,
                          communicator,
                          settings.surface_stations,
                          settings.plate_rate);
+      output.state_name                                  = fault.state_name();
       TimeIntegration::DormandPrince::Settings tolerance = settings.integrator;
       tolerance.absolute_tolerance =
         fault.absolute_tolerances(settings.absolute_tolerance,

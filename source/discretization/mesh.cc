@@ -170,7 +170,7 @@ namespace rupture
     Discretization<dim>::partition() const
     {
       // locally owned cells, and those with a face on the fault
-      std::array<double, 2> mine = {0, 0};
+      std::array<double, 2> mine = {{0, 0}};
       for (const auto &cell : mesh.active_cell_iterators())
         if (cell->is_locally_owned())
           {

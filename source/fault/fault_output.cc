@@ -601,7 +601,9 @@ namespace rupture
               directory.write(
                 s.name + ".dat",
                 seas_station(s,
-                             !fault.friction().state_names().empty(),
+                             fault.friction().state_names().empty() ?
+                               std::string() :
+                               fault.friction().state_names()[0],
                              test_mode));
               continue;
             }
@@ -718,16 +720,21 @@ namespace rupture
 
     template <int dim>
     std::string
-    FaultOutput<dim>::seas_station(const Station &s,
-                                   const bool     has_state,
-                                   const bool     test_mode) const
+    FaultOutput<dim>::seas_station(const Station     &s,
+                                   const std::string &state_name,
+                                   const bool         test_mode) const
     {
-      const Tensor<1, dim> r = s.location - origin;
+      const bool           has_state = !state_name.empty();
+      const Tensor<1, dim> r         = s.location - origin;
       std::ostringstream   location;
       location << "on fault, " << strike_component(r) / 1e3
                << " km along strike, " << down_dip_distance(s.location) / 1e3
                << " km down-dip";
-      std::string out = Output::seas_station_header(location.str(), test_mode);
+      std::string out =
+        Output::seas_station_header(location.str(),
+                                    test_mode,
+                                    false,
+                                    has_state ? state_name : "log10_theta");
       // A row of the station: t, h-slip, h-slip-rate, h-shear-stress,
       // v-..., then with a state the normal stress and the state outputs
       // (log10 theta first; without a state the columns after the SCEC

@@ -16,19 +16,28 @@ namespace rupture
       /// are taken at V >= this rate (m/s).
       constexpr double minimum_rate = 1e-30;
 
-      const std::array<const char *, 11> names = {
-        "Direct effect",
-        "Evolution effect",
-        "Characteristic slip distance",
-        "Reference friction coefficient",
-        "Reference slip rate",
-        "Direct activation enthalpy",
-        "Evolution activation enthalpy",
-        "Reference temperature",
-        "Reservoir temperature",
-        "Heat capacity per area",
-        "Heat relaxation time"};
+      using Family = RateStateFamily<11>;
+      using Range  = Family::Range;
+
+      const std::array<Family::ConstantEntry, 11> entries = {
+        {{"Direct effect", Range::positive, "> 0"},
+         {"Evolution effect", Range::non_negative, ">= 0"},
+         {"Characteristic slip distance", Range::positive, "> 0"},
+         {"Reference friction coefficient", Range::finite, "a finite number"},
+         {"Reference slip rate", Range::positive, "> 0"},
+         {"Direct activation enthalpy", Range::finite, "a finite number"},
+         {"Evolution activation enthalpy", Range::finite, "a finite number"},
+         {"Reference temperature", Range::positive, "> 0"},
+         {"Reservoir temperature", Range::positive, "> 0"},
+         {"Heat capacity per area", Range::positive, "> 0"},
+         {"Heat relaxation time", Range::positive, "> 0"}}};
     } // namespace
+
+
+
+    Chester::Chester()
+      : RateStateFamily<11>("Chester", entries, 2, 1)
+    {}
 
 
 
@@ -80,7 +89,7 @@ namespace rupture
                   "to T_r (about w^2 / thermal diffusivity), as a function of x, y, "
                   "z. > 0."};
         for (unsigned int i = 0; i < 11; ++i)
-          prm.declare_entry(names[i],
+          prm.declare_entry(entries[i].name,
                             defaults[i],
                             Patterns::Anything(),
                             help[i]);
@@ -114,13 +123,9 @@ namespace rupture
       {
         regularized      = (prm.get("Formulation") == "regularized");
         const auto parse = [&](const std::string &entry) {
-          return Utilities::parse_function<3>(prm.get(entry),
-                                              1,
-                                              "Fault/Chester/" + entry,
-                                              "x,y,z");
+          return parse_function(prm, entry);
         };
-        for (unsigned int i = 0; i < 11; ++i)
-          functions[i] = parse(names[i]);
+        parse_constants(prm);
         initial_temperature = parse("Initial temperature");
         initial_rate        = parse("Initial slip rate");
         if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
@@ -153,12 +158,12 @@ namespace rupture
 
 
     double
-    Chester::evolve(const Constants &c,
-                    const double     theta,
-                    const double     V,
-                    const double     T,
-                    const double     dt,
-                    double          &dtheta_dV)
+    Chester::evolve_at(const Constants &c,
+                       const double     theta,
+                       const double     V,
+                       const double     T,
+                       const double     dt,
+                       double          &dtheta_dV)
     {
       const double d_c = c[2];
       if (V <= 0)
@@ -196,13 +201,26 @@ namespace rupture
 
 
     double
-    Chester::friction(const Constants &c,
-                      const double     V,
-                      const double     theta,
-                      const double     T,
-                      double          &dmu_dV,
-                      double          &dmu_dtheta) const
+    Chester::evolve(const Constants           &c,
+                    const std::vector<double> &variables,
+                    const double               V,
+                    const double               dt,
+                    double                    &dtheta_dV) const
     {
+      return evolve_at(c, variables[0], V, variables.at(1), dt, dtheta_dV);
+    }
+
+
+
+    double
+    Chester::friction(const Constants           &c,
+                      const std::vector<double> &variables,
+                      const double               V,
+                      const double               theta,
+                      double                    &dmu_dV,
+                      double                    &dmu_dtheta) const
+    {
+      const double T = variables.at(1);
       const double A = c[0], B = c[1], V_c = c[4];
       const double psi = c[3] + A * arrhenius(c, c[5], T) + B * theta;
       if (regularized)
@@ -226,36 +244,22 @@ namespace rupture
                               const double    initial_friction,
                               State          &state) const
     {
-      state                   = State();
-      const Constants c       = LawUtilities::constants(functions, x, state);
-      const auto      require = [&](const bool         ok,
-                               const std::string &entry,
-                               const double       value,
-                               const std::string &allowed) {
-        LawUtilities::require(ok, "Chester", entry, value, x, allowed);
-      };
-      for (const unsigned int i : {0u, 2u, 4u, 7u, 8u, 9u, 10u})
-        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
-      for (const unsigned int i : {3u, 5u, 6u})
-        require(std::isfinite(c[i]), names[i], c[i], "a finite number");
-      require(std::isfinite(c[1]) && c[1] >= 0, names[1], c[1], ">= 0");
-      state.parameters.assign(c.begin(), c.end());
+      const Constants c = start_state(x, state);
 
       const double T = initial_temperature->value(x);
-      require(std::isfinite(T) && T > 0, "Initial temperature", T, "> 0 (K)");
+      require(
+        std::isfinite(T) && T > 0, "Initial temperature", T, x, "> 0 (K)");
       double theta = 0;
       if (initial_state)
         {
           theta = initial_state->value(x);
-          require(std::isfinite(theta), "Initial state", theta, "finite");
+          require(std::isfinite(theta), "Initial state", theta, x, "finite");
         }
       else
         {
           const double V = initial_rate->value(x);
-          require(std::isfinite(V) && V > 0,
-                  "Initial slip rate",
-                  V,
-                  "> 0 (m/s)");
+          require(
+            std::isfinite(V) && V > 0, "Initial slip rate", V, x, "> 0 (m/s)");
           AssertThrow(
             std::isfinite(initial_friction) && initial_friction > 0 && c[1] > 0,
             ExcMessage("<Fault/Chester/Initial state> is empty, so the "
@@ -274,6 +278,7 @@ namespace rupture
           require(std::isfinite(theta),
                   "Initial slip rate",
                   V,
+                  x,
                   "a rate at which the initial friction is reached with a "
                   "finite state");
         }
@@ -282,92 +287,23 @@ namespace rupture
 
 
 
-    double
-    Chester::coefficient(const Point<3> &x,
-                         const State    &old,
-                         const double    slip_increment,
-                         const double    dt,
-                         double         &derivative) const
-    {
-      const Constants c = LawUtilities::constants(functions, x, old);
-      const double    T = old.variables.at(1);
-      return LawUtilities::step_coefficient(
-        slip_increment,
-        dt,
-        [&](const double V, double &ds_dV) {
-          return evolve(c, old.variables[0], V, T, dt, ds_dV);
-        },
-        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
-          return friction(c, V, s, T, dmu_dV, dmu_ds);
-        },
-        derivative);
-    }
-
-
-
-    double
-    Chester::coefficient_at_rate(const Point<3> &x,
-                                 const State    &state,
-                                 const double    V,
-                                 double         &derivative) const
-    {
-      const Constants c      = LawUtilities::constants(functions, x, state);
-      double          unused = 0;
-      return friction(
-        c, V, state.variables.at(0), state.variables.at(1), derivative, unused);
-    }
-
-
-
-    double
-    Chester::slip_scale(const Point<3> &x, const State &state) const
-    {
-      return LawUtilities::constants(functions, x, state)[2];
-    }
-
-
-
-    double
-    Chester::process_zone_width(const Point<3> &x,
-                                const State    &state,
-                                const double    pressure,
-                                const double    shear_modulus) const
-    {
-      // The constants' slip scale and strength drop (see the header).
-      return LawUtilities::process_zone_of_constants(
-        functions, x, state, pressure, shear_modulus, 2, 1);
-    }
-
-
-
-    double
-    Chester::cohesion(const Point<3> &, const State &) const
-    {
-      return 0;
-    }
-
-
-
     void
-    Chester::update_state(const Point<3> &x,
-                          const State    &old,
-                          const double    slip_increment,
-                          const double    dt,
-                          const double    shear_traction,
-                          State          &updated) const
+    Chester::evolve_state(const Point<3>            &x,
+                          const Constants           &c,
+                          const std::vector<double> &old,
+                          const double               V,
+                          const double               dt,
+                          const double               shear_traction,
+                          std::vector<double>       &updated) const
     {
-      Interface::update_state(
-        x, old, slip_increment, dt, shear_traction, updated);
-      const Constants c      = LawUtilities::constants(functions, x, old);
-      const double    V      = LawUtilities::slip_rate(slip_increment, dt);
-      const double    T      = old.variables.at(1);
-      double          unused = 0;
-      const double    T_new =
+      const double T      = old.at(1);
+      double       unused = 0;
+      const double T_new =
         (dt > 0) ? heat(c, T, std::abs(shear_traction) * V, dt) : T;
       // theta evolves at the step's mean temperature (second order in the
       // coupling, for the split nodes' time-centred update).
       const double theta =
-        evolve(c, old.variables[0], V, 0.5 * (T + T_new), dt, unused);
+        evolve_at(c, old[0], V, 0.5 * (T + T_new), dt, unused);
       AssertThrow(std::isfinite(theta) && std::isfinite(T_new) && T_new > 0,
                   ExcMessage("The state of Chester's law left the finite "
                              "numbers" +
@@ -376,7 +312,7 @@ namespace rupture
                              ", T = " + std::to_string(T_new) +
                              " K). Lower the heating (raise <Fault/Chester/"
                              "Heat capacity per area>) or the time step."));
-      updated.variables = {theta, T_new};
+      updated = {theta, T_new};
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

@@ -15,15 +15,24 @@ namespace rupture
       /// psi_ss has no value at V = 0: it is taken at V >= this rate (m/s).
       constexpr double minimum_rate = 1e-30;
 
-      const std::array<const char *, 7> names = {
-        "Direct effect",
-        "Evolution effect",
-        "Characteristic slip distance",
-        "Reference friction coefficient",
-        "Reference slip rate",
-        "Weakened friction coefficient",
-        "Weakening slip rate"};
+      using Family = RateStateFamily<7>;
+      using Range  = Family::Range;
+
+      const std::array<Family::ConstantEntry, 7> entries = {
+        {{"Direct effect", Range::positive, "> 0"},
+         {"Evolution effect", Range::non_negative, ">= 0"},
+         {"Characteristic slip distance", Range::positive, "> 0"},
+         {"Reference friction coefficient", Range::finite, "a finite number"},
+         {"Reference slip rate", Range::positive, "> 0"},
+         {"Weakened friction coefficient", Range::positive, "> 0"},
+         {"Weakening slip rate", Range::positive, "> 0"}}};
     } // namespace
+
+
+
+    FlashHeating::FlashHeating()
+      : RateStateFamily<7>("Flash heating", entries, 2, 1)
+    {}
 
 
 
@@ -48,7 +57,7 @@ namespace rupture
           "V_w (m/s), the slip rate above which flash heating weakens the "
           "fault, as a function of x, y, z. > 0."};
         for (unsigned int i = 0; i < 7; ++i)
-          prm.declare_entry(names[i],
+          prm.declare_entry(entries[i].name,
                             defaults[i],
                             Patterns::Anything(),
                             help[i]);
@@ -76,17 +85,10 @@ namespace rupture
     {
       prm.enter_subsection("Flash heating");
       {
-        const auto parse = [&](const std::string &entry) {
-          return Utilities::parse_function<3>(prm.get(entry),
-                                              1,
-                                              "Fault/Flash heating/" + entry,
-                                              "x,y,z");
-        };
-        for (unsigned int i = 0; i < 7; ++i)
-          functions[i] = parse(names[i]);
-        initial_rate = parse("Initial slip rate");
+        parse_constants(prm);
+        initial_rate = parse_function(prm, "Initial slip rate");
         if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
-          initial_state = parse("Initial state");
+          initial_state = parse_function(prm, "Initial state");
       }
       prm.leave_subsection();
     }
@@ -144,12 +146,13 @@ namespace rupture
 
 
     double
-    FlashHeating::evolve(const Constants &c,
-                         const double     psi,
-                         const double     V,
-                         const double     dt,
-                         double          &dpsi_dV)
+    FlashHeating::evolve(const Constants           &c,
+                         const std::vector<double> &variables,
+                         const double               V,
+                         const double               dt,
+                         double                    &dpsi_dV) const
     {
+      const double psi = variables[0];
       if (V <= 0)
         {
           // The state does not evolve without slip; its rate of change
@@ -173,10 +176,11 @@ namespace rupture
 
     double
     FlashHeating::friction(const Constants &c,
-                           const double     V,
-                           const double     psi,
-                           double          &dmu_dV,
-                           double          &dmu_dpsi)
+                           const std::vector<double> &,
+                           const double V,
+                           const double psi,
+                           double      &dmu_dV,
+                           double      &dmu_dpsi) const
     {
       return StateEvolution::regularized_friction(
         c[0], c[4], V, psi, dmu_dV, dmu_dpsi);
@@ -189,34 +193,20 @@ namespace rupture
                                    const double    initial_friction,
                                    State          &state) const
     {
-      state                     = State();
-      const Constants   c       = LawUtilities::constants(functions, x, state);
-      const std::string at      = LawUtilities::at_point(x);
-      const auto        require = [&](const bool         ok,
-                               const std::string &entry,
-                               const double       value,
-                               const std::string &allowed) {
-        LawUtilities::require(ok, "Flash heating", entry, value, x, allowed);
-      };
-      for (const unsigned int i : {0u, 2u, 4u, 5u, 6u})
-        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
-      require(std::isfinite(c[1]) && c[1] >= 0, names[1], c[1], ">= 0");
-      require(std::isfinite(c[3]), names[3], c[3], "a finite number");
-      state.parameters.assign(c.begin(), c.end());
+      const Constants   c  = start_state(x, state);
+      const std::string at = LawUtilities::at_point(x);
 
       double psi = 0;
       if (initial_state)
         {
           psi = initial_state->value(x);
-          require(std::isfinite(psi), "Initial state", psi, "finite");
+          require(std::isfinite(psi), "Initial state", psi, x, "finite");
         }
       else
         {
           const double V = initial_rate->value(x);
-          require(std::isfinite(V) && V > 0,
-                  "Initial slip rate",
-                  V,
-                  "> 0 (m/s)");
+          require(
+            std::isfinite(V) && V > 0, "Initial slip rate", V, x, "> 0 (m/s)");
           AssertThrow(std::isfinite(initial_friction) && initial_friction > 0,
                       ExcMessage(
                         "<Fault/Flash heating/Initial state> is empty, so "
@@ -234,87 +224,21 @@ namespace rupture
 
 
 
-    double
-    FlashHeating::coefficient(const Point<3> &x,
-                              const State    &old,
-                              const double    slip_increment,
-                              const double    dt,
-                              double         &derivative) const
-    {
-      const Constants c = LawUtilities::constants(functions, x, old);
-      return LawUtilities::step_coefficient(
-        slip_increment,
-        dt,
-        [&](const double V, double &ds_dV) {
-          return evolve(c, old.variables.at(0), V, dt, ds_dV);
-        },
-        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
-          return friction(c, V, s, dmu_dV, dmu_ds);
-        },
-        derivative);
-    }
-
-
-
-    double
-    FlashHeating::coefficient_at_rate(const Point<3> &x,
-                                      const State    &state,
-                                      const double    V,
-                                      double         &derivative) const
-    {
-      const Constants c      = LawUtilities::constants(functions, x, state);
-      double          unused = 0;
-      return friction(c, V, state.variables.at(0), derivative, unused);
-    }
-
-
-
-    double
-    FlashHeating::slip_scale(const Point<3> &x, const State &state) const
-    {
-      return LawUtilities::constants(functions, x, state)[2];
-    }
-
-
-
-    double
-    FlashHeating::process_zone_width(const Point<3> &x,
-                                     const State    &state,
-                                     const double    pressure,
-                                     const double    shear_modulus) const
-    {
-      // The constants' slip scale and strength drop (see the header).
-      return LawUtilities::process_zone_of_constants(
-        functions, x, state, pressure, shear_modulus, 2, 1);
-    }
-
-
-
-    double
-    FlashHeating::cohesion(const Point<3> &, const State &) const
-    {
-      return 0;
-    }
-
-
-
     void
-    FlashHeating::update_state(const Point<3> &x,
-                               const State    &old,
-                               const double    slip_increment,
-                               const double    dt,
-                               const double    shear_traction,
-                               State          &updated) const
+    FlashHeating::state_rates(const Constants           &c,
+                              const std::vector<double> &variables,
+                              const double               V,
+                              std::vector<double>       &rates) const
     {
-      Interface::update_state(
-        x, old, slip_increment, dt, shear_traction, updated);
-      const Constants c      = LawUtilities::constants(functions, x, old);
-      double          unused = 0;
-      updated.variables      = {evolve(c,
-                                  old.variables.at(0),
-                                  LawUtilities::slip_rate(slip_increment, dt),
-                                  dt,
-                                  unused)};
+      // No slip, no evolution (psi_ss has no value at V = 0).
+      if (V <= 0)
+        {
+          rates.assign(1, 0.);
+          return;
+        }
+      double       unused = 0;
+      const double ss     = steady_state(c, V, unused);
+      rates.assign(1, -V / c[2] * (variables.at(0) - ss));
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

@@ -1,6 +1,8 @@
 #include <rupture/base/registry.h>
 #include <rupture/friction/interface.h>
 
+#include <algorithm>
+
 namespace rupture
 {
   namespace Friction
@@ -121,26 +123,20 @@ namespace rupture
 
 
     void
-    Interface::set_time(const double time)
-    {
-      current_time = time;
-    }
+    Interface::set_time(const double)
+    {}
 
 
 
     void
-    Interface::start_dynamic_phase(const double time)
-    {
-      dynamic_start = time;
-    }
+    Interface::start_dynamic_phase(const double)
+    {}
 
 
 
     void
-    Interface::enable_weakening(const bool enable)
-    {
-      weakening_enabled = enable;
-    }
+    Interface::enable_weakening(const bool)
+    {}
 
 
 
@@ -188,6 +184,23 @@ namespace rupture
                         "The friction law of the fault. Available laws:" +
                           registry().descriptions());
       registry().declare_all(prm);
+    }
+
+
+
+    std::string
+    laws_with_state_rate()
+    {
+      std::vector<std::string> names = registry().names();
+      std::sort(names.begin(), names.end());
+      std::string result;
+      for (const auto &name : names)
+        if (registry()
+              .find(name, "Fault/Friction law")
+              .create()
+              ->has_state_rate())
+          result += (result.empty() ? "" : ", ") + name;
+      return result;
     }
 
 

@@ -187,6 +187,30 @@ namespace rupture
 
 
 
+    void
+    LinearSlipWeakening::set_time(const double time)
+    {
+      current_time = time;
+    }
+
+
+
+    void
+    LinearSlipWeakening::start_dynamic_phase(const double time)
+    {
+      dynamic_start = time;
+    }
+
+
+
+    void
+    LinearSlipWeakening::enable_weakening(const bool enable)
+    {
+      weakening_enabled = enable;
+    }
+
+
+
     bool
     LinearSlipWeakening::can_weaken(const Point<3> &x, const State &state) const
     {

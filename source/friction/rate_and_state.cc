@@ -16,15 +16,24 @@ namespace rupture
       /// no value at V = 0.
       constexpr double minimum_log_rate = 1e-30;
 
-      const std::array<const char *, 5> names = {
-        "Direct effect",
-        "Evolution effect",
-        "Characteristic slip distance",
-        "Reference friction coefficient",
-        "Reference slip rate"};
+      using Family = RateStateFamily<5>;
+      using Range  = Family::Range;
+
+      const std::array<Family::ConstantEntry, 5> entries = {
+        {{"Direct effect", Range::positive, "> 0"},
+         {"Evolution effect", Range::non_negative, ">= 0"},
+         {"Characteristic slip distance", Range::positive, "> 0 (m)"},
+         {"Reference friction coefficient", Range::finite, "a finite number"},
+         {"Reference slip rate", Range::positive, "> 0 (m/s)"}}};
     } // namespace
 
     using LawUtilities::at_point;
+
+
+
+    RateAndState::RateAndState()
+      : RateStateFamily<5>("Rate and state", entries, 2, 1)
+    {}
 
 
 
@@ -98,23 +107,15 @@ namespace rupture
     {
       prm.enter_subsection("Rate and state");
       {
-        const std::string s = "Fault/Rate and state/";
-        formulation         = (prm.get("Formulation") == "logarithmic") ?
-                                Formulation::logarithmic :
-                                Formulation::regularized;
+        formulation = (prm.get("Formulation") == "logarithmic") ?
+                        Formulation::logarithmic :
+                        Formulation::regularized;
         evolution = (prm.get("Evolution law") == "slip") ? EvolutionLaw::slip :
                                                            EvolutionLaw::aging;
-        const auto parse = [&](const std::string &entry) {
-          return Utilities::parse_function<3>(prm.get(entry),
-                                              1,
-                                              s + entry,
-                                              "x,y,z");
-        };
-        for (unsigned int i = 0; i < 5; ++i)
-          functions[i] = parse(names[i]);
-        initial_rate = parse("Initial slip rate");
+        parse_constants(prm);
+        initial_rate = parse_function(prm, "Initial slip rate");
         if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
-          initial_state = parse("Initial state");
+          initial_state = parse_function(prm, "Initial state");
       }
       prm.leave_subsection();
     }
@@ -126,23 +127,10 @@ namespace rupture
                                    const double    initial_friction,
                                    State          &state) const
     {
-      state             = State();
-      const Constants c = LawUtilities::constants(functions, x, state);
+      const Constants c            = start_state(x, state);
       const auto [a, b, L, f0, V0] = c;
       const std::string where      = at_point(x);
       const std::string s          = "<Fault/Rate and state/";
-      const auto        require    = [&](const bool         ok,
-                               const std::string &entry,
-                               const double       value,
-                               const std::string &allowed) {
-        LawUtilities::require(ok, "Rate and state", entry, value, x, allowed);
-      };
-      require(std::isfinite(a) && a > 0, names[0], a, "> 0");
-      require(std::isfinite(b) && b >= 0, names[1], b, ">= 0");
-      require(std::isfinite(L) && L > 0, names[2], L, "> 0 (m)");
-      require(std::isfinite(f0), names[3], f0, "a finite number");
-      require(std::isfinite(V0) && V0 > 0, names[4], V0, "> 0 (m/s)");
-      state.parameters = {a, b, L, f0, V0};
 
       double theta = 0;
       if (initial_state)
@@ -151,15 +139,14 @@ namespace rupture
           require(std::isfinite(theta) && theta > 0,
                   "Initial state",
                   theta,
+                  x,
                   "> 0 (s)");
         }
       else
         {
           const double V = initial_rate->value(x);
-          require(std::isfinite(V) && V > 0,
-                  "Initial slip rate",
-                  V,
-                  "> 0 (m/s)");
+          require(
+            std::isfinite(V) && V > 0, "Initial slip rate", V, x, "> 0 (m/s)");
           AssertThrow(std::isfinite(initial_friction) && initial_friction >= 0,
                       ExcMessage(
                         s +
@@ -218,14 +205,15 @@ namespace rupture
 
 
     double
-    RateAndState::evolve(const Constants &c,
-                         const double     theta,
-                         const double     V,
-                         const double     dt,
-                         double          &dtheta_dV) const
+    RateAndState::evolve(const Constants           &c,
+                         const std::vector<double> &variables,
+                         const double               V,
+                         const double               dt,
+                         double                    &dtheta_dV) const
     {
-      const double L = c[2];
-      const double x = V * dt / L;
+      const double theta = variables[0];
+      const double L     = c[2];
+      const double x     = V * dt / L;
       if (evolution == EvolutionLaw::aging)
         {
           // theta_new = theta e^-x + dt (1 - e^-x)/x, x = (V / L) dt.
@@ -257,10 +245,11 @@ namespace rupture
 
     double
     RateAndState::friction(const Constants &c,
-                           const double     V,
-                           const double     theta,
-                           double          &dmu_dV,
-                           double          &dmu_dtheta) const
+                           const std::vector<double> &,
+                           const double V,
+                           const double theta,
+                           double      &dmu_dV,
+                           double      &dmu_dtheta) const
     {
       const auto [a, b, L, f0, V0] = c;
       const double log_state       = std::log(V0 * theta / L);
@@ -281,61 +270,14 @@ namespace rupture
 
 
 
-    double
-    RateAndState::coefficient(const Point<3> &x,
-                              const State    &old,
-                              const double    slip_increment,
-                              const double    dt,
-                              double         &derivative) const
-    {
-      const Constants c = LawUtilities::constants(functions, x, old);
-      AssertThrow(old.variables.size() == 1,
-                  ExcMessage("The rate-and-state law was used at a point "
-                             "whose state was not initialised" +
-                             at_point(x) + "."));
-      return LawUtilities::step_coefficient(
-        slip_increment,
-        dt,
-        [&](const double V, double &dtheta_dV) {
-          return evolve(c, old.variables[0], V, dt, dtheta_dV);
-        },
-        [&](const double V, const double theta, double &dV, double &dtheta) {
-          return friction(c, V, theta, dV, dtheta);
-        },
-        derivative);
-    }
-
-
-
-    double
-    RateAndState::coefficient_at_rate(const Point<3> &x,
-                                      const State    &state,
-                                      const double    V,
-                                      double         &derivative) const
-    {
-      const Constants c      = LawUtilities::constants(functions, x, state);
-      double          unused = 0;
-      return friction(c, V, state.variables.at(0), derivative, unused);
-    }
-
-
-
-    double
-    RateAndState::slip_scale(const Point<3> &x, const State &state) const
-    {
-      return LawUtilities::constants(functions, x, state)[2];
-    }
-
-
-
     void
-    RateAndState::state_rate(const Point<3>      &x,
-                             const State         &state,
-                             const double         V,
-                             std::vector<double> &rates) const
+    RateAndState::state_rates(const Constants           &c,
+                              const std::vector<double> &variables,
+                              const double               V,
+                              std::vector<double>       &rates) const
     {
-      const double L     = LawUtilities::constants(functions, x, state)[2];
-      const double theta = state.variables.at(0);
+      const double L     = c[2];
+      const double theta = variables.at(0);
       const double omega = V * theta / L;
       // aging: 1 - V theta / L; slip: -(V theta / L) ln(V theta / L), which
       // tends to 0 as V -> 0.
@@ -347,53 +289,27 @@ namespace rupture
 
 
 
-    double
-    RateAndState::process_zone_width(const Point<3> &x,
-                                     const State    &state,
-                                     const double    pressure,
-                                     const double    shear_modulus) const
-    {
-      // The constants' slip scale and strength drop (see the header).
-      return LawUtilities::process_zone_of_constants(
-        functions, x, state, pressure, shear_modulus, 2, 1);
-    }
-
-
-
-    double
-    RateAndState::cohesion(const Point<3> &, const State &) const
-    {
-      return 0;
-    }
-
-
-
     void
-    RateAndState::update_state(const Point<3> &x,
-                               const State    &old,
-                               const double    slip_increment,
-                               const double    dt,
-                               const double    shear_traction,
-                               State          &updated) const
+    RateAndState::evolve_state(const Point<3>            &x,
+                               const Constants           &c,
+                               const std::vector<double> &old,
+                               const double               V,
+                               const double               dt,
+                               const double,
+                               std::vector<double> &updated) const
     {
-      Interface::update_state(
-        x, old, slip_increment, dt, shear_traction, updated);
-      const Constants c      = LawUtilities::constants(functions, x, old);
-      const double    V      = LawUtilities::slip_rate(slip_increment, dt);
-      double          unused = 0;
-      updated.variables      = {evolve(c, old.variables[0], V, dt, unused)};
-      AssertThrow(std::isfinite(updated.variables[0]) &&
-                    updated.variables[0] > 0,
-                  ExcMessage("The rate-and-state state variable theta left "
-                             "the positive finite numbers" +
-                             at_point(x) + " (theta was " +
-                             std::to_string(old.variables[0]) +
-                             " s, slip "
-                             "rate " +
-                             std::to_string(V) +
-                             " m/s, L = " + std::to_string(c[2]) +
-                             " m, <Fault/Rate and state/Characteristic slip "
-                             "distance>)."));
+      double unused = 0;
+      updated       = {evolve(c, old, V, dt, unused)};
+      AssertThrow(std::isfinite(updated[0]) && updated[0] > 0,
+                  ExcMessage(
+                    "The rate-and-state state variable theta left "
+                    "the positive finite numbers" +
+                    at_point(x) + " (theta was " + std::to_string(old[0]) +
+                    " s, slip "
+                    "rate " +
+                    std::to_string(V) + " m/s, L = " + std::to_string(c[2]) +
+                    " m, <Fault/Rate and state/Characteristic slip "
+                    "distance>)."));
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

@@ -16,15 +16,25 @@ namespace rupture
       /// V >= this rate (m/s).
       constexpr double minimum_rate = 1e-30;
 
-      const std::array<const char *, 8> names = {"Static friction coefficient",
-                                                 "Direct effect",
-                                                 "Evolution effect",
-                                                 "Characteristic slip distance",
-                                                 "High-velocity cut-off",
-                                                 "State cut-off",
-                                                 "Low-velocity cut-off",
-                                                 "Healing cut-off"};
+      using Family = RateStateFamily<8>;
+      using Range  = Family::Range;
+
+      const std::array<Family::ConstantEntry, 8> entries = {
+        {{"Static friction coefficient", Range::finite, "a finite number"},
+         {"Direct effect", Range::non_negative, ">= 0"},
+         {"Evolution effect", Range::non_negative, ">= 0"},
+         {"Characteristic slip distance", Range::positive, "> 0"},
+         {"High-velocity cut-off", Range::positive, "> 0"},
+         {"State cut-off", Range::positive, "> 0"},
+         {"Low-velocity cut-off", Range::non_negative, ">= 0"},
+         {"Healing cut-off", Range::non_negative, ">= 0"}}};
     } // namespace
+
+
+
+    SlownessLaw::SlownessLaw()
+      : RateStateFamily<8>("Slowness law", entries, 3, 2)
+    {}
 
 
 
@@ -53,7 +63,7 @@ namespace rupture
           "Perrin's V1 (m/s), as a function of x, y, z. >= 0. With V1 > 0 "
           "the state stays below L/V1."};
         for (unsigned int i = 0; i < 8; ++i)
-          prm.declare_entry(names[i],
+          prm.declare_entry(entries[i].name,
                             defaults[i],
                             Patterns::Anything(),
                             help[i]);
@@ -81,17 +91,10 @@ namespace rupture
     {
       prm.enter_subsection("Slowness law");
       {
-        const auto parse = [&](const std::string &entry) {
-          return Utilities::parse_function<3>(prm.get(entry),
-                                              1,
-                                              "Fault/Slowness law/" + entry,
-                                              "x,y,z");
-        };
-        for (unsigned int i = 0; i < 8; ++i)
-          functions[i] = parse(names[i]);
-        initial_rate = parse("Initial slip rate");
+        parse_constants(prm);
+        initial_rate = parse_function(prm, "Initial slip rate");
         if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
-          initial_state = parse("Initial state");
+          initial_state = parse_function(prm, "Initial state");
       }
       prm.leave_subsection();
     }
@@ -100,10 +103,11 @@ namespace rupture
 
     double
     SlownessLaw::friction(const Constants &c,
-                          const double     V,
-                          const double     theta,
-                          double          &dmu_dV,
-                          double          &dmu_dtheta)
+                          const std::vector<double> &,
+                          const double V,
+                          const double theta,
+                          double      &dmu_dV,
+                          double      &dmu_dtheta) const
     {
       const auto [mu0, A, B, L, Vinf, theta0, V0, V1] = c;
       (void)L;
@@ -120,12 +124,13 @@ namespace rupture
 
 
     double
-    SlownessLaw::evolve(const Constants &c,
-                        const double     theta,
-                        const double     V,
-                        const double     dt,
-                        double          &dtheta_dV)
+    SlownessLaw::evolve(const Constants           &c,
+                        const std::vector<double> &variables,
+                        const double               V,
+                        const double               dt,
+                        double                    &dtheta_dV) const
     {
+      const double theta     = variables[0];
       const double L         = c[3];
       const double V1        = c[7];
       double       dtheta_dr = 0;
@@ -142,21 +147,8 @@ namespace rupture
                                   const double    initial_friction,
                                   State          &state) const
     {
-      state                     = State();
-      const Constants   c       = LawUtilities::constants(functions, x, state);
-      const std::string at      = LawUtilities::at_point(x);
-      const auto        require = [&](const bool         ok,
-                               const std::string &entry,
-                               const double       value,
-                               const std::string &allowed) {
-        LawUtilities::require(ok, "Slowness law", entry, value, x, allowed);
-      };
-      require(std::isfinite(c[0]), names[0], c[0], "a finite number");
-      for (const unsigned int i : {1u, 2u, 6u, 7u})
-        require(std::isfinite(c[i]) && c[i] >= 0, names[i], c[i], ">= 0");
-      for (const unsigned int i : {3u, 4u, 5u})
-        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
-      state.parameters.assign(c.begin(), c.end());
+      const Constants   c  = start_state(x, state);
+      const std::string at = LawUtilities::at_point(x);
 
       double theta = 0;
       if (initial_state)
@@ -165,6 +157,7 @@ namespace rupture
           require(std::isfinite(theta) && theta >= 0,
                   "Initial state",
                   theta,
+                  x,
                   ">= 0 (s)");
         }
       else
@@ -173,6 +166,7 @@ namespace rupture
           require(std::isfinite(V) && (V > 0 || (V == 0 && c[6] > 0)),
                   "Initial slip rate",
                   V,
+                  x,
                   (c[6] > 0) ? ">= 0 (m/s)" : "> 0 (m/s) without V0");
           AssertThrow(std::isfinite(initial_friction),
                       ExcMessage(
@@ -184,7 +178,7 @@ namespace rupture
           // B ln(1 + theta/theta0) = mu_ini - mu(V, theta = 0).
           double       unused_V = 0, unused_theta = 0;
           const double rest =
-            initial_friction - friction(c, V, 0., unused_V, unused_theta);
+            initial_friction - friction(c, {}, V, 0., unused_V, unused_theta);
           const double B      = c[2];
           const double theta0 = c[5];
           theta               = (B > 0) ? theta0 * std::expm1(rest / B) : 0.;
@@ -208,87 +202,14 @@ namespace rupture
 
 
 
-    double
-    SlownessLaw::coefficient(const Point<3> &x,
-                             const State    &old,
-                             const double    slip_increment,
-                             const double    dt,
-                             double         &derivative) const
-    {
-      const Constants c = LawUtilities::constants(functions, x, old);
-      return LawUtilities::step_coefficient(
-        slip_increment,
-        dt,
-        [&](const double V, double &ds_dV) {
-          return evolve(c, old.variables.at(0), V, dt, ds_dV);
-        },
-        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
-          return friction(c, V, s, dmu_dV, dmu_ds);
-        },
-        derivative);
-    }
-
-
-
-    double
-    SlownessLaw::coefficient_at_rate(const Point<3> &x,
-                                     const State    &state,
-                                     const double    V,
-                                     double         &derivative) const
-    {
-      const Constants c      = LawUtilities::constants(functions, x, state);
-      double          unused = 0;
-      return friction(c, V, state.variables.at(0), derivative, unused);
-    }
-
-
-
-    double
-    SlownessLaw::slip_scale(const Point<3> &x, const State &state) const
-    {
-      return LawUtilities::constants(functions, x, state)[3];
-    }
-
-
-
-    double
-    SlownessLaw::process_zone_width(const Point<3> &x,
-                                    const State    &state,
-                                    const double    pressure,
-                                    const double    shear_modulus) const
-    {
-      // The constants' slip scale and strength drop (see the header).
-      return LawUtilities::process_zone_of_constants(
-        functions, x, state, pressure, shear_modulus, 3, 2);
-    }
-
-
-
-    double
-    SlownessLaw::cohesion(const Point<3> &, const State &) const
-    {
-      return 0;
-    }
-
-
-
     void
-    SlownessLaw::update_state(const Point<3> &x,
-                              const State    &old,
-                              const double    slip_increment,
-                              const double    dt,
-                              const double    shear_traction,
-                              State          &updated) const
+    SlownessLaw::state_rates(const Constants           &c,
+                             const std::vector<double> &variables,
+                             const double               V,
+                             std::vector<double>       &rates) const
     {
-      Interface::update_state(
-        x, old, slip_increment, dt, shear_traction, updated);
-      const Constants c      = LawUtilities::constants(functions, x, old);
-      double          unused = 0;
-      updated.variables      = {evolve(c,
-                                  old.variables.at(0),
-                                  LawUtilities::slip_rate(slip_increment, dt),
-                                  dt,
-                                  unused)};
+      const double L = c[3], V1 = c[7];
+      rates.assign(1, 1 - variables.at(0) * (V1 + std::max(V, 0.)) / L);
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

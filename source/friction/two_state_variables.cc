@@ -15,14 +15,24 @@ namespace rupture
       /// ln(V/Vc) has no value at V = 0: it is taken at V >= this rate.
       constexpr double minimum_rate = 1e-30;
 
-      const std::array<const char *, 7> names = {"Static friction coefficient",
-                                                 "Direct effect",
-                                                 "Evolution effect 1",
-                                                 "Evolution effect 2",
-                                                 "Slip distance 1",
-                                                 "Slip distance 2",
-                                                 "Reference slip rate"};
+      using Family = RateStateFamily<7>;
+      using Range  = Family::Range;
+
+      const std::array<Family::ConstantEntry, 7> entries = {
+        {{"Static friction coefficient", Range::finite, "a finite number"},
+         {"Direct effect", Range::positive, "> 0"},
+         {"Evolution effect 1", Range::non_negative, ">= 0"},
+         {"Evolution effect 2", Range::non_negative, ">= 0"},
+         {"Slip distance 1", Range::positive, "> 0"},
+         {"Slip distance 2", Range::positive, "> 0"},
+         {"Reference slip rate", Range::positive, "> 0"}}};
     } // namespace
+
+
+
+    TwoStateVariables::TwoStateVariables()
+      : RateStateFamily<7>("Two state variables", entries, 4, 2)
+    {}
 
 
 
@@ -55,7 +65,7 @@ namespace rupture
           "function of x, y, z. > 0.",
           "Vc (m/s), the reference slip rate, as a function of x, y, z. > 0."};
         for (unsigned int i = 0; i < 7; ++i)
-          prm.declare_entry(names[i],
+          prm.declare_entry(entries[i].name,
                             defaults[i],
                             Patterns::Anything(),
                             help[i]);
@@ -87,12 +97,10 @@ namespace rupture
       prm.enter_subsection("Two state variables");
       {
         const auto parse = [&](const std::string &entry) {
-          return Utilities::parse_function<3>(
-            prm.get(entry), 1, "Fault/Two state variables/" + entry, "x,y,z");
+          return parse_function(prm, entry);
         };
         logarithmic = (prm.get("Formulation") == "logarithmic");
-        for (unsigned int i = 0; i < 7; ++i)
-          functions[i] = parse(names[i]);
+        parse_constants(prm);
         initial_rate = parse("Initial slip rate");
         const bool
           first  = !dealii::Utilities::trim(prm.get("Initial state 1")).empty(),
@@ -113,12 +121,12 @@ namespace rupture
 
 
     double
-    TwoStateVariables::evolve(const Constants   &c,
-                              const unsigned int i,
-                              const double       th,
-                              const double       V,
-                              const double       dt,
-                              double            &dth_dV)
+    TwoStateVariables::evolve_one(const Constants   &c,
+                                  const unsigned int i,
+                                  const double       th,
+                                  const double       V,
+                                  const double       dt,
+                                  double            &dth_dV)
     {
       const double B  = c[2 + i];
       const double d  = c[4 + i];
@@ -141,10 +149,11 @@ namespace rupture
 
     double
     TwoStateVariables::friction(const Constants &c,
-                                const double     V,
-                                const double     th_sum,
-                                double          &dmu_dV,
-                                double          &dmu_dth) const
+                                const std::vector<double> &,
+                                const double V,
+                                const double th_sum,
+                                double      &dmu_dV,
+                                double      &dmu_dth) const
     {
       const double mu0 = c[0], A = c[1], Vc = c[6];
       if (logarithmic)
@@ -165,22 +174,8 @@ namespace rupture
                                         const double    initial_friction,
                                         State          &state) const
     {
-      state                     = State();
-      const Constants   c       = LawUtilities::constants(functions, x, state);
-      const std::string at      = LawUtilities::at_point(x);
-      const auto        require = [&](const bool         ok,
-                               const std::string &entry,
-                               const double       value,
-                               const std::string &allowed) {
-        LawUtilities::require(
-          ok, "Two state variables", entry, value, x, allowed);
-      };
-      require(std::isfinite(c[0]), names[0], c[0], "a finite number");
-      for (const unsigned int i : {1u, 4u, 5u, 6u})
-        require(std::isfinite(c[i]) && c[i] > 0, names[i], c[i], "> 0");
-      for (const unsigned int i : {2u, 3u})
-        require(std::isfinite(c[i]) && c[i] >= 0, names[i], c[i], ">= 0");
-      state.parameters.assign(c.begin(), c.end());
+      const Constants   c  = start_state(x, state);
+      const std::string at = LawUtilities::at_point(x);
 
       if (initial_state[0])
         {
@@ -190,11 +185,13 @@ namespace rupture
             require(std::isfinite(state.variables[i]),
                     "Initial state " + std::to_string(i + 1),
                     state.variables[i],
+                    x,
                     "finite");
           return;
         }
       const double V = initial_rate->value(x);
-      require(std::isfinite(V) && V > 0, "Initial slip rate", V, "> 0 (m/s)");
+      require(
+        std::isfinite(V) && V > 0, "Initial slip rate", V, x, "> 0 (m/s)");
       AssertThrow(std::isfinite(initial_friction) && initial_friction > 0,
                   ExcMessage("<Fault/Two state variables/Initial state 1> and "
                              "<Initial state 2> are empty, so the initial "
@@ -217,46 +214,50 @@ namespace rupture
 
 
     double
-    TwoStateVariables::coefficient(const Point<3> &x,
-                                   const State    &old,
-                                   const double    slip_increment,
-                                   const double    dt,
-                                   double         &derivative) const
+    TwoStateVariables::evolve(const Constants           &c,
+                              const std::vector<double> &variables,
+                              const double               V,
+                              const double               dt,
+                              double                    &ds_dV) const
     {
-      const Constants c = LawUtilities::constants(functions, x, old);
-      return LawUtilities::step_coefficient(
-        slip_increment,
-        dt,
-        [&](const double V, double &ds_dV) {
-          // mu depends on the states through their sum.
-          double       d1 = 0, d2 = 0;
-          const double sum = evolve(c, 0, old.variables.at(0), V, dt, d1) +
-                             evolve(c, 1, old.variables.at(1), V, dt, d2);
-          ds_dV = d1 + d2;
-          return sum;
-        },
-        [&](const double V, const double s, double &dmu_dV, double &dmu_ds) {
-          return friction(c, V, s, dmu_dV, dmu_ds);
-        },
-        derivative);
+      // mu depends on the states through their sum.
+      double       d1 = 0, d2 = 0;
+      const double sum = evolve_one(c, 0, variables.at(0), V, dt, d1) +
+                         evolve_one(c, 1, variables.at(1), V, dt, d2);
+      ds_dV = d1 + d2;
+      return sum;
     }
 
 
 
-    double
-    TwoStateVariables::coefficient_at_rate(const Point<3> &x,
-                                           const State    &state,
-                                           const double    V,
-                                           double         &derivative) const
+    void
+    TwoStateVariables::evolve_state(const Point<3> &,
+                                    const Constants           &c,
+                                    const std::vector<double> &old,
+                                    const double               V,
+                                    const double               dt,
+                                    const double,
+                                    std::vector<double> &updated) const
     {
-      const Constants c      = LawUtilities::constants(functions, x, state);
-      double          unused = 0;
-      // mu depends on the states through their sum.
-      return friction(c,
-                      V,
-                      state.variables.at(0) + state.variables.at(1),
-                      derivative,
-                      unused);
+      double unused = 0;
+      updated       = {evolve_one(c, 0, old.at(0), V, dt, unused),
+                       evolve_one(c, 1, old.at(1), V, dt, unused)};
+    }
+
+
+
+    void
+    TwoStateVariables::state_rates(const Constants           &c,
+                                   const std::vector<double> &variables,
+                                   const double               V,
+                                   std::vector<double>       &rates) const
+    {
+      rates.assign(2, 0.);
+      if (V <= 0)
+        return;
+      for (unsigned int i = 0; i < 2; ++i)
+        rates[i] =
+          -V / c[4 + i] * (variables.at(i) + c[2 + i] * std::log(V / c[6]));
     }
 
 
@@ -264,8 +265,7 @@ namespace rupture
     double
     TwoStateVariables::slip_scale(const Point<3> &x, const State &state) const
     {
-      // The shorter of the two states' distances.
-      const Constants c = LawUtilities::constants(functions, x, state);
+      const Constants c = constants(x, state);
       return std::min(c[4], c[5]);
     }
 
@@ -277,39 +277,11 @@ namespace rupture
                                           const double    pressure,
                                           const double    shear_modulus) const
     {
-      // The shorter of the two states' zones.
-      const Constants c = LawUtilities::constants(functions, x, state);
+      const Constants c = constants(x, state);
       return std::min(
         LawUtilities::process_zone_at_rest(shear_modulus, c[4], c[2], pressure),
         LawUtilities::process_zone_at_rest(
           shear_modulus, c[5], c[3], pressure));
-    }
-
-
-
-    double
-    TwoStateVariables::cohesion(const Point<3> &, const State &) const
-    {
-      return 0;
-    }
-
-
-
-    void
-    TwoStateVariables::update_state(const Point<3> &x,
-                                    const State    &old,
-                                    const double    slip_increment,
-                                    const double    dt,
-                                    const double    shear_traction,
-                                    State          &updated) const
-    {
-      Interface::update_state(
-        x, old, slip_increment, dt, shear_traction, updated);
-      const Constants c      = LawUtilities::constants(functions, x, old);
-      const double    V      = LawUtilities::slip_rate(slip_increment, dt);
-      double          unused = 0;
-      updated.variables = {evolve(c, 0, old.variables.at(0), V, dt, unused),
-                           evolve(c, 1, old.variables.at(1), V, dt, unused)};
     }
 
     RUPTURE_REGISTER_FRICTION_LAW(

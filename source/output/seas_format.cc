@@ -39,8 +39,12 @@ namespace rupture
     std::string
     seas_station_header(const std::string &location,
                         const bool         test_mode,
-                        const bool         normal_stress)
+                        const bool         normal_stress,
+                        const std::string &state_name)
     {
+      const std::string  state = (state_name == "log10_theta") ?
+                                   "State (log10 s)" :
+                                   "State (" + state_name + ")";
       std::ostringstream out;
       header_start(out,
                    "rupture station output (SCEC SEAS format)",
@@ -52,11 +56,11 @@ namespace rupture
           << "# Column #4 = Shear stress (MPa)\n";
       if (normal_stress)
         out << "# Column #5 = Normal stress (MPa)\n"
-            << "# Column #6 = State (log10 s)\n"
+            << "# Column #6 = " << state << "\n"
             << "# The line below lists the names of the data fields\n"
             << "t slip slip_rate shear_stress normal_stress state\n";
       else
-        out << "# Column #5 = State (log10 s)\n"
+        out << "# Column #5 = " << state << "\n"
             << "# The line below lists the names of the data fields\n"
             << "t slip slip_rate shear_stress state\n";
       out << "# Here is the time-series data.\n";

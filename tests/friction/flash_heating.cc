@@ -159,8 +159,8 @@ main(int argc, char **argv)
     State state;
     law->initialize_state(origin, 40. / 120., state);
     double       dV = 0, dpsi = 0;
-    const double mu =
-      FlashHeating::friction(tpv103, 1e-16, state.variables[0], dV, dpsi);
+    const double mu = dynamic_cast<const FlashHeating &>(*law).friction(
+      tpv103, state.variables, 1e-16, state.variables[0], dV, dpsi);
     std::printf("   psi = %.8f, mu(V_ini, psi) = %.10f\n",
                 state.variables[0],
                 mu);

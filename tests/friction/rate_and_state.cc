@@ -141,8 +141,8 @@ main(int argc, char **argv)
       const auto &rs = dynamic_cast<const RateAndState &>(*law);
       law->initialize_state(origin, 75. / 120., state);
       double       dV = 0, dtheta = 0;
-      const double mu =
-        rs.friction(tpv101, 1e-12, state.variables[0], dV, dtheta);
+      const double mu = rs.friction(
+        tpv101, state.variables, 1e-12, state.variables[0], dV, dtheta);
       std::printf("   %-12s theta = %.6e s, mu(V_ini, theta) = %.10f\n",
                   form.c_str(),
                   state.variables[0],

@@ -51,6 +51,16 @@ namespace rupture
         return names;
       }
 
+      /// The names, in the order of registration.
+      std::vector<std::string>
+      names() const
+      {
+        std::vector<std::string> result;
+        for (const auto &e : entries)
+          result.push_back(e.name);
+        return result;
+      }
+
       /// One line "'name': description" per component.
       std::string
       descriptions() const

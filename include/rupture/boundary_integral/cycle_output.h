@@ -81,6 +81,10 @@ namespace rupture
                               &surface_points = {},
                   const double plate_rate     = 0);
 
+      /// The name of the stations' state column: the friction law's first
+      /// state output (QuasiDynamicFault::state_name()), set before open().
+      std::string state_name = "log10_theta";
+
       /**
        * Open the files in @p directory: with their headers, or
        * (@p continuing) cut back to the lengths that load() read.

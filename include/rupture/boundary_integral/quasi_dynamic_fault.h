@@ -145,9 +145,12 @@ namespace rupture
        */
       std::string
       opening_report() const;
-      /// The law's first state variable (as the law defines it).
+      /// The law's first state output at element @p i (log10 theta, psi,
+      /// th1: Friction::Interface::state_output()), and its name.
       double
       state(const unsigned int i) const;
+      std::string
+      state_name() const;
       double
       max_slip_rate() const;
 

@@ -173,11 +173,12 @@ namespace rupture
       /// its distance down-dip from the plane point.
       double
       down_dip_distance(const Point<dim> &x) const;
-      /// The text of station @p s in the SCEC SEAS layout.
+      /// The text of station @p s in the SCEC SEAS layout; @p state_name
+      /// is the law's first state output (empty for a law without state).
       std::string
-      seas_station(const Station &s,
-                   const bool     has_state,
-                   const bool     test_mode) const;
+      seas_station(const Station     &s,
+                   const std::string &state_name,
+                   const bool         test_mode) const;
 
       MPI_Comm    communicator;
       std::string station_text;

@@ -1,7 +1,7 @@
 #ifndef rupture_friction_chester_h
 #define rupture_friction_chester_h
 
-#include <rupture/friction/interface.h>
+#include <rupture/friction/rate_state_family.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -49,9 +49,11 @@ namespace rupture
      * State variables {theta, T}; parameters
      * {A, B, d_c, mu0, V_c, Q_A, Q_B, T*, T_r, H, t_c}.
      */
-    class Chester : public Interface
+    class Chester : public RateStateFamily<11>
     {
     public:
+      Chester();
+
       static void
       declare_parameters(ParameterHandler &prm);
 
@@ -64,43 +66,6 @@ namespace rupture
       initialize_state(const Point<3> &x,
                        const double    initial_friction,
                        State          &state) const override;
-
-      double
-      coefficient(const Point<3> &x,
-                  const State    &old,
-                  const double    slip_increment,
-                  const double    dt,
-                  double         &derivative) const override;
-
-      double
-      coefficient_at_rate(const Point<3> &x,
-                          const State    &state,
-                          const double    V,
-                          double         &derivative) const override;
-
-      double
-      cohesion(const Point<3> &x, const State &state) const override;
-
-      double
-      process_zone_width(const Point<3> &x,
-                         const State    &state,
-                         const double    pressure,
-                         const double    shear_modulus) const override;
-
-      double
-      slip_scale(const Point<3> &x, const State &state) const override;
-
-      bool
-      has_process_zone_width() const override
-      {
-        return true;
-      }
-
-      bool
-      depends_on_slip_rate() const override
-      {
-        return true;
-      }
 
       bool
       state_interpolates_in_logarithm(const unsigned int i) const override
@@ -127,21 +92,11 @@ namespace rupture
         return true;
       }
 
-      void
-      update_state(const Point<3> &x,
-                   const State    &old,
-                   const double    slip_increment,
-                   const double    dt,
-                   const double    shear_traction,
-                   State          &updated) const override;
-
       /// The gas constant R (J/(mol K)).
       static constexpr double gas_constant = 8.314462618;
 
-      /// {A, B, d_c, mu0, V_c, Q_A, Q_B, T*, T_r, H, t_c}.
-      using Constants = std::array<double, 11>;
-
-      /// Q / R (1/T - 1/T*), the temperature term of an enthalpy Q.
+      /// Q / R (1/T - 1/T*), the temperature term of an enthalpy Q ({A, B,
+      /// d_c, mu0, V_c, Q_A, Q_B, T*, T_r, H, t_c} in @p c).
       static double
       arrhenius(const Constants &c, const double Q, const double T);
 
@@ -155,12 +110,12 @@ namespace rupture
       /// theta after a step @p dt at the constant slip rate @p V and
       /// temperature @p T, and d theta_new / dV.
       static double
-      evolve(const Constants &c,
-             const double     theta,
-             const double     V,
-             const double     T,
-             const double     dt,
-             double          &dtheta_dV);
+      evolve_at(const Constants &c,
+                const double     theta,
+                const double     V,
+                const double     T,
+                const double     dt,
+                double          &dtheta_dV);
 
       /// The temperature after a step @p dt with the frictional heating
       /// @p heating = tau V (W/m^2).
@@ -170,21 +125,54 @@ namespace rupture
            const double     heating,
            const double     dt);
 
-      /// mu(V, theta, T) and its partial derivatives in V and theta.
+      // The law's physics (RateStateFamily).
+      unsigned int
+      n_state_variables() const override
+      {
+        return 2;
+      }
+
+      /// theta.
       double
-      friction(const Constants &c,
-               const double     V,
-               const double     theta,
-               const double     T,
-               double          &dmu_dV,
-               double          &dmu_dtheta) const;
+      friction_state(const std::vector<double> &variables) const override
+      {
+        return variables[0];
+      }
+
+      /// theta after a step at the temperature at its start.
+      double
+      evolve(const Constants           &c,
+             const std::vector<double> &variables,
+             const double               V,
+             const double               dt,
+             double                    &dtheta_dV) const override;
+
+      /// mu(V, theta, T) (T the second state variable) and its partial
+      /// derivatives in V and theta.
+      double
+      friction(const Constants           &c,
+               const std::vector<double> &variables,
+               const double               V,
+               const double               theta,
+               double                    &dmu_dV,
+               double                    &dmu_dtheta) const override;
+
+      /// The temperature warmed by the step's heating, and theta evolved at
+      /// the step's mean temperature.
+      void
+      evolve_state(const Point<3>            &x,
+                   const Constants           &c,
+                   const std::vector<double> &old,
+                   const double               V,
+                   const double               dt,
+                   const double               shear_traction,
+                   std::vector<double>       &updated) const override;
 
     private:
-      bool                                               regularized = true;
-      std::array<std::unique_ptr<FunctionParser<3>>, 11> functions;
-      std::unique_ptr<FunctionParser<3>>                 initial_state;
-      std::unique_ptr<FunctionParser<3>>                 initial_rate;
-      std::unique_ptr<FunctionParser<3>>                 initial_temperature;
+      bool                               regularized = true;
+      std::unique_ptr<FunctionParser<3>> initial_state;
+      std::unique_ptr<FunctionParser<3>> initial_rate;
+      std::unique_ptr<FunctionParser<3>> initial_temperature;
     };
   } // namespace Friction
 } // namespace rupture

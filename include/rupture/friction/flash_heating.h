@@ -1,7 +1,7 @@
 #ifndef rupture_friction_flash_heating_h
 #define rupture_friction_flash_heating_h
 
-#include <rupture/friction/interface.h>
+#include <rupture/friction/rate_state_family.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -35,9 +35,11 @@ namespace rupture
      *
      * State variables {psi}; parameters {a, b, L, f0, V0, f_w, V_w}.
      */
-    class FlashHeating : public Interface
+    class FlashHeating : public RateStateFamily<7>
     {
     public:
+      FlashHeating();
+
       static void
       declare_parameters(ParameterHandler &prm);
 
@@ -51,39 +53,8 @@ namespace rupture
                        const double    initial_friction,
                        State          &state) const override;
 
-      double
-      coefficient(const Point<3> &x,
-                  const State    &old,
-                  const double    slip_increment,
-                  const double    dt,
-                  double         &derivative) const override;
-
-      double
-      coefficient_at_rate(const Point<3> &x,
-                          const State    &state,
-                          const double    V,
-                          double         &derivative) const override;
-
-      double
-      cohesion(const Point<3> &x, const State &state) const override;
-
-      double
-      process_zone_width(const Point<3> &x,
-                         const State    &state,
-                         const double    pressure,
-                         const double    shear_modulus) const override;
-
-      double
-      slip_scale(const Point<3> &x, const State &state) const override;
-
       bool
-      has_process_zone_width() const override
-      {
-        return true;
-      }
-
-      bool
-      depends_on_slip_rate() const override
+      has_state_rate() const override
       {
         return true;
       }
@@ -100,18 +71,8 @@ namespace rupture
         return {state.variables.at(0)};
       }
 
-      void
-      update_state(const Point<3> &x,
-                   const State    &old,
-                   const double    slip_increment,
-                   const double    dt,
-                   const double    shear_traction,
-                   State          &updated) const override;
-
-      /// {a, b, L, f0, V0, f_w, V_w}.
-      using Constants = std::array<double, 7>;
-
-      /// The steady-state friction f_ss(V) and its derivative.
+      /// The steady-state friction f_ss(V) and its derivative ({a, b, L, f0,
+      /// V0, f_w, V_w} in @p c).
       static double
       steady_state_friction(const Constants &c,
                             const double     V,
@@ -121,27 +82,42 @@ namespace rupture
       static double
       steady_state(const Constants &c, const double V, double &derivative);
 
+      // The law's physics (RateStateFamily).
+      /// psi.
+      double
+      friction_state(const std::vector<double> &variables) const override
+      {
+        return variables[0];
+      }
+
       /// psi after a step @p dt at the constant slip rate @p V, and
       /// d psi_new / dV.
-      static double
-      evolve(const Constants &c,
-             const double     psi,
-             const double     V,
-             const double     dt,
-             double          &dpsi_dV);
+      double
+      evolve(const Constants           &c,
+             const std::vector<double> &variables,
+             const double               V,
+             const double               dt,
+             double                    &dpsi_dV) const override;
 
       /// mu(V, psi) and its partial derivatives.
-      static double
-      friction(const Constants &c,
-               const double     V,
-               const double     psi,
-               double          &dmu_dV,
-               double          &dmu_dpsi);
+      double
+      friction(const Constants           &c,
+               const std::vector<double> &variables,
+               const double               V,
+               const double               psi,
+               double                    &dmu_dV,
+               double                    &dmu_dpsi) const override;
+
+      /// d psi / dt = -(V / L) (psi - psi_ss(V)), 0 at V = 0.
+      void
+      state_rates(const Constants           &c,
+                  const std::vector<double> &variables,
+                  const double               V,
+                  std::vector<double>       &rates) const override;
 
     private:
-      std::array<std::unique_ptr<FunctionParser<3>>, 7> functions;
-      std::unique_ptr<FunctionParser<3>>                initial_state;
-      std::unique_ptr<FunctionParser<3>>                initial_rate;
+      std::unique_ptr<FunctionParser<3>> initial_state;
+      std::unique_ptr<FunctionParser<3>> initial_rate;
     };
   } // namespace Friction
 } // namespace rupture

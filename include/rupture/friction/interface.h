@@ -180,24 +180,22 @@ namespace rupture
                    State          &updated) const;
 
       /**
-       * The time (s) at the end of the step being solved, for laws that
-       * depend on it (forced nucleation).
+       * The load sequence's clock and phase, for the laws that depend on
+       * them (linear slip weakening's forced nucleation and its bonded
+       * zones); the others ignore them. set_time(): the time (s) at the end
+       * of the step being solved; start_dynamic_phase(): the time at which
+       * the dynamic phase starts (0 without a loading phase);
+       * enable_weakening(): switch weakening off (during a quasi-static
+       * loading phase, when bonded zones hold up to their static strength)
+       * or on.
        */
-      void
+      virtual void
       set_time(const double time);
 
-      /**
-       * The time (s) at which the dynamic phase of the load sequence
-       * starts (0 without a loading phase).
-       */
-      void
+      virtual void
       start_dynamic_phase(const double time);
 
-      /**
-       * Switch weakening off (during a quasi-static loading phase, when
-       * bonded zones hold up to their static strength) or on.
-       */
-      void
+      virtual void
       enable_weakening(const bool enable);
 
       /**
@@ -312,11 +310,6 @@ namespace rupture
        */
       virtual bool
       can_weaken(const Point<3> &x, const State &state) const;
-
-    protected:
-      double current_time      = 0;
-      double dynamic_start     = 0;
-      bool   weakening_enabled = true;
     };
 
     /**
@@ -333,6 +326,14 @@ namespace rupture
      */
     void
     declare_parameters(ParameterHandler &prm);
+
+    /**
+     * The names of the laws that give the rates of change of their state
+     * (Interface::has_state_rate()), in alphabetical order and separated by
+     * commas: what a method that integrates the state allows.
+     */
+    std::string
+    laws_with_state_rate();
 
     /**
      * Create and parse the law named in "Fault/Friction law" (the caller

@@ -71,29 +71,6 @@ namespace rupture
                            const double pressure);
 
       /**
-       * process_zone_at_rest() with the slip scale and the strength drop
-       * that are the law's constants number @p slip_scale and @p drop at
-       * @p x (constants()).
-       */
-      template <std::size_t n>
-      double
-      process_zone_of_constants(
-        const std::array<std::unique_ptr<FunctionParser<3>>, n> &f,
-        const Point<3>                                          &x,
-        const State                                             &state,
-        const double                                             pressure,
-        const double                                             shear_modulus,
-        const unsigned int                                       slip_scale,
-        const unsigned int                                       drop)
-      {
-        const auto c = constants(f, x, state);
-        return process_zone_at_rest(shear_modulus,
-                                    c[slip_scale],
-                                    c[drop],
-                                    pressure);
-      }
-
-      /**
        * The slip rate of a step: the slip increment over dt (0 for
        * dt <= 0).
        */

@@ -63,6 +63,15 @@ namespace rupture
       bool
       can_weaken(const Point<3> &x, const State &state) const override;
 
+      void
+      set_time(const double time) override;
+
+      void
+      start_dynamic_phase(const double time) override;
+
+      void
+      enable_weakening(const bool enable) override;
+
     private:
       /// mu_0, mu_d, L_d, cohesion and the forced-region flag at @p x:
       /// from the state's cached parameters once initialize_state() has
@@ -76,6 +85,12 @@ namespace rupture
       std::unique_ptr<FunctionParser<3>> cohesion_function;
       std::unique_ptr<FunctionParser<3>> forced_region;
       double                             forced_time;
+
+      /// The time at the end of the step being solved, the start of the
+      /// dynamic phase (for forced nucleation) and whether weakening is on.
+      double current_time      = 0;
+      double dynamic_start     = 0;
+      bool   weakening_enabled = true;
     };
   } // namespace Friction
 } // namespace rupture

@@ -1,7 +1,7 @@
 #ifndef rupture_friction_rate_and_state_h
 #define rupture_friction_rate_and_state_h
 
-#include <rupture/friction/interface.h>
+#include <rupture/friction/rate_state_family.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -53,7 +53,7 @@ namespace rupture
      * The state variables of a point are {theta}; its parameters
      * {a, b, L, f0, V0}.
      */
-    class RateAndState : public Interface
+    class RateAndState : public RateStateFamily<5>
     {
     public:
       enum class Formulation
@@ -66,6 +66,8 @@ namespace rupture
         aging,
         slip
       };
+
+      RateAndState();
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -80,51 +82,8 @@ namespace rupture
                        const double    initial_friction,
                        State          &state) const override;
 
-      double
-      coefficient(const Point<3> &x,
-                  const State    &old,
-                  const double    slip_increment,
-                  const double    dt,
-                  double         &derivative) const override;
-
-      double
-      coefficient_at_rate(const Point<3> &x,
-                          const State    &state,
-                          const double    V,
-                          double         &derivative) const override;
-
-      double
-      cohesion(const Point<3> &x, const State &state) const override;
-
-      double
-      process_zone_width(const Point<3> &x,
-                         const State    &state,
-                         const double    pressure,
-                         const double    shear_modulus) const override;
-
-      double
-      slip_scale(const Point<3> &x, const State &state) const override;
-
       bool
       has_state_rate() const override
-      {
-        return true;
-      }
-
-      void
-      state_rate(const Point<3>      &x,
-                 const State         &state,
-                 const double         V,
-                 std::vector<double> &rates) const override;
-
-      bool
-      has_process_zone_width() const override
-      {
-        return true;
-      }
-
-      bool
-      depends_on_slip_rate() const override
       {
         return true;
       }
@@ -147,47 +106,53 @@ namespace rupture
         return {std::log10(state.variables.at(0))};
       }
 
+      // The law's physics (RateStateFamily).
+      /// theta.
+      double
+      friction_state(const std::vector<double> &variables) const override
+      {
+        return variables[0];
+      }
+
+      /// theta after the step (see the class documentation).
+      double
+      evolve(const Constants           &c,
+             const std::vector<double> &variables,
+             const double               V,
+             const double               dt,
+             double                    &dtheta_dV) const override;
+
+      /// mu(V, theta).
+      double
+      friction(const Constants           &c,
+               const std::vector<double> &variables,
+               const double               V,
+               const double               theta,
+               double                    &dmu_dV,
+               double                    &dmu_dtheta) const override;
+
+      /// theta after the step, which must stay finite and positive.
       void
-      update_state(const Point<3> &x,
-                   const State    &old,
-                   const double    slip_increment,
-                   const double    dt,
-                   const double    shear_traction,
-                   State          &updated) const override;
+      evolve_state(const Point<3>            &x,
+                   const Constants           &c,
+                   const std::vector<double> &old,
+                   const double               V,
+                   const double               dt,
+                   const double               shear_traction,
+                   std::vector<double>       &updated) const override;
 
-      /**
-       * The point's constants {a, b, L, f0, V0}.
-       */
-      using Constants = std::array<double, 5>;
-
-      /**
-       * The state theta after a step of length @p dt at the constant slip
-       * rate @p V from @p theta, and d theta_new / d V in @p dtheta_dV.
-       */
-      double
-      evolve(const Constants &c,
-             const double     theta,
-             const double     V,
-             const double     dt,
-             double          &dtheta_dV) const;
-
-      /**
-       * mu(V, theta) and its partial derivatives.
-       */
-      double
-      friction(const Constants &c,
-               const double     V,
-               const double     theta,
-               double          &dmu_dV,
-               double          &dmu_dtheta) const;
+      /// d theta / dt of the aging or the slip law.
+      void
+      state_rates(const Constants           &c,
+                  const std::vector<double> &variables,
+                  const double               V,
+                  std::vector<double>       &rates) const override;
 
     private:
-      Formulation  formulation = Formulation::regularized;
-      EvolutionLaw evolution   = EvolutionLaw::aging;
-      /// a, b, L, f0 and V0 as functions of position.
-      std::array<std::unique_ptr<FunctionParser<3>>, 5> functions;
-      std::unique_ptr<FunctionParser<3>>                initial_state;
-      std::unique_ptr<FunctionParser<3>>                initial_rate;
+      Formulation                        formulation = Formulation::regularized;
+      EvolutionLaw                       evolution   = EvolutionLaw::aging;
+      std::unique_ptr<FunctionParser<3>> initial_state;
+      std::unique_ptr<FunctionParser<3>> initial_rate;
     };
   } // namespace Friction
 } // namespace rupture

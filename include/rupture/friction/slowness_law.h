@@ -1,7 +1,7 @@
 #ifndef rupture_friction_slowness_law_h
 #define rupture_friction_slowness_law_h
 
-#include <rupture/friction/interface.h>
+#include <rupture/friction/rate_state_family.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -39,9 +39,11 @@ namespace rupture
      * State variables {theta}; parameters {mu0, A, B, L, Vinf, theta0, V0,
      * V1}.
      */
-    class SlownessLaw : public Interface
+    class SlownessLaw : public RateStateFamily<8>
     {
     public:
+      SlownessLaw();
+
       static void
       declare_parameters(ParameterHandler &prm);
 
@@ -55,39 +57,8 @@ namespace rupture
                        const double    initial_friction,
                        State          &state) const override;
 
-      double
-      coefficient(const Point<3> &x,
-                  const State    &old,
-                  const double    slip_increment,
-                  const double    dt,
-                  double         &derivative) const override;
-
-      double
-      coefficient_at_rate(const Point<3> &x,
-                          const State    &state,
-                          const double    V,
-                          double         &derivative) const override;
-
-      double
-      cohesion(const Point<3> &x, const State &state) const override;
-
-      double
-      process_zone_width(const Point<3> &x,
-                         const State    &state,
-                         const double    pressure,
-                         const double    shear_modulus) const override;
-
-      double
-      slip_scale(const Point<3> &x, const State &state) const override;
-
       bool
-      has_process_zone_width() const override
-      {
-        return true;
-      }
-
-      bool
-      depends_on_slip_rate() const override
+      has_state_rate() const override
       {
         return true;
       }
@@ -110,38 +81,43 @@ namespace rupture
         return {std::log10(state.variables.at(0))};
       }
 
-      void
-      update_state(const Point<3> &x,
-                   const State    &old,
-                   const double    slip_increment,
-                   const double    dt,
-                   const double    shear_traction,
-                   State          &updated) const override;
+      // The law's physics (RateStateFamily).
+      /// theta.
+      double
+      friction_state(const std::vector<double> &variables) const override
+      {
+        return variables[0];
+      }
 
-      /// {mu0, A, B, L, Vinf, theta0, V0, V1}.
-      using Constants = std::array<double, 8>;
-
-      /// mu(V, theta) and its partial derivatives.
-      static double
-      friction(const Constants &c,
-               const double     V,
-               const double     theta,
-               double          &dmu_dV,
-               double          &dmu_dtheta);
+      /// mu(V, theta) and its partial derivatives ({mu0, A, B, L, Vinf,
+      /// theta0, V0, V1} in @p c).
+      double
+      friction(const Constants           &c,
+               const std::vector<double> &variables,
+               const double               V,
+               const double               theta,
+               double                    &dmu_dV,
+               double                    &dmu_dtheta) const override;
 
       /// theta after a step @p dt at the constant slip rate @p V, and
       /// d theta_new / dV.
-      static double
-      evolve(const Constants &c,
-             const double     theta,
-             const double     V,
-             const double     dt,
-             double          &dtheta_dV);
+      double
+      evolve(const Constants           &c,
+             const std::vector<double> &variables,
+             const double               V,
+             const double               dt,
+             double                    &dtheta_dV) const override;
+
+      /// d theta / dt = 1 - theta (V1 + V) / L.
+      void
+      state_rates(const Constants           &c,
+                  const std::vector<double> &variables,
+                  const double               V,
+                  std::vector<double>       &rates) const override;
 
     private:
-      std::array<std::unique_ptr<FunctionParser<3>>, 8> functions;
-      std::unique_ptr<FunctionParser<3>>                initial_state;
-      std::unique_ptr<FunctionParser<3>>                initial_rate;
+      std::unique_ptr<FunctionParser<3>> initial_state;
+      std::unique_ptr<FunctionParser<3>> initial_rate;
     };
   } // namespace Friction
 } // namespace rupture

@@ -1,7 +1,7 @@
 #ifndef rupture_friction_two_state_variables_h
 #define rupture_friction_two_state_variables_h
 
-#include <rupture/friction/interface.h>
+#include <rupture/friction/rate_state_family.h>
 
 #include <deal.II/base/function_parser.h>
 
@@ -35,9 +35,11 @@ namespace rupture
      *
      * State variables {th1, th2}; parameters {mu0, A, B1, B2, d1, d2, Vc}.
      */
-    class TwoStateVariables : public Interface
+    class TwoStateVariables : public RateStateFamily<7>
     {
     public:
+      TwoStateVariables();
+
       static void
       declare_parameters(ParameterHandler &prm);
 
@@ -51,39 +53,19 @@ namespace rupture
                        const double    initial_friction,
                        State          &state) const override;
 
+      /// The shorter of d1 and d2.
       double
-      coefficient(const Point<3> &x,
-                  const State    &old,
-                  const double    slip_increment,
-                  const double    dt,
-                  double         &derivative) const override;
+      slip_scale(const Point<3> &x, const State &state) const override;
 
-      double
-      coefficient_at_rate(const Point<3> &x,
-                          const State    &state,
-                          const double    V,
-                          double         &derivative) const override;
-
-      double
-      cohesion(const Point<3> &x, const State &state) const override;
-
+      /// The shorter of the two states' zones.
       double
       process_zone_width(const Point<3> &x,
                          const State    &state,
                          const double    pressure,
                          const double    shear_modulus) const override;
 
-      double
-      slip_scale(const Point<3> &x, const State &state) const override;
-
       bool
-      has_process_zone_width() const override
-      {
-        return true;
-      }
-
-      bool
-      depends_on_slip_rate() const override
+      has_state_rate() const override
       {
         return true;
       }
@@ -100,38 +82,68 @@ namespace rupture
         return {state.variables.at(0), state.variables.at(1)};
       }
 
+      // The law's physics (RateStateFamily).
+      unsigned int
+      n_state_variables() const override
+      {
+        return 2;
+      }
+
+      /// th1 + th2, through which the states enter the friction.
+      double
+      friction_state(const std::vector<double> &variables) const override
+      {
+        return variables[0] + variables[1];
+      }
+
+      /// th1 + th2 after a step @p dt at the constant slip rate @p V, and
+      /// its derivative with respect to V.
+      double
+      evolve(const Constants           &c,
+             const std::vector<double> &variables,
+             const double               V,
+             const double               dt,
+             double                    &ds_dV) const override;
+
+      /// mu(V, th1 + th2) and its partial derivatives ({mu0, A, B1, B2,
+      /// d1, d2, Vc} in @p c).
+      double
+      friction(const Constants           &c,
+               const std::vector<double> &variables,
+               const double               V,
+               const double               th_sum,
+               double                    &dmu_dV,
+               double                    &dmu_dth) const override;
+
+      /// Both states after the step.
       void
-      update_state(const Point<3> &x,
-                   const State    &old,
-                   const double    slip_increment,
-                   const double    dt,
-                   const double    shear_traction,
-                   State          &updated) const override;
+      evolve_state(const Point<3>            &x,
+                   const Constants           &c,
+                   const std::vector<double> &old,
+                   const double               V,
+                   const double               dt,
+                   const double               shear_traction,
+                   std::vector<double>       &updated) const override;
 
-      /// {mu0, A, B1, B2, d1, d2, Vc}.
-      using Constants = std::array<double, 7>;
+      /// d th_i / dt = -(V / d_i) (th_i + B_i ln(V / Vc)), 0 at V = 0.
+      void
+      state_rates(const Constants           &c,
+                  const std::vector<double> &variables,
+                  const double               V,
+                  std::vector<double>       &rates) const override;
 
+    private:
       /// th_i after a step @p dt at the constant slip rate @p V, and
       /// d th_i,new / dV.
       static double
-      evolve(const Constants   &c,
-             const unsigned int i,
-             const double       th,
-             const double       V,
-             const double       dt,
-             double            &dth_dV);
+      evolve_one(const Constants   &c,
+                 const unsigned int i,
+                 const double       th,
+                 const double       V,
+                 const double       dt,
+                 double            &dth_dV);
 
-      /// mu(V, th1 + th2) and its partial derivatives.
-      double
-      friction(const Constants &c,
-               const double     V,
-               const double     th_sum,
-               double          &dmu_dV,
-               double          &dmu_dth) const;
-
-    private:
       bool                                              logarithmic = false;
-      std::array<std::unique_ptr<FunctionParser<3>>, 7> functions;
       std::array<std::unique_ptr<FunctionParser<3>>, 2> initial_state;
       std::unique_ptr<FunctionParser<3>>                initial_rate;
     };

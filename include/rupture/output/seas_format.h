@@ -15,19 +15,24 @@ namespace rupture
      * @p location, e.g. "on fault, 0 km along strike, 7.5 km down-dip";
      * no date in @p test_mode), the column names and the line that opens
      * the data; with @p normal_stress a column of the normal stress (MPa)
-     * before the state's (SEAS BP3, where it changes with the slip).
+     * before the state's (SEAS BP3, where it changes with the slip). The
+     * state column is the friction law's first state output @p state_name
+     * ("log10_theta", SEAS's "State (log10 s)"; else named as the law
+     * names it, e.g. "psi").
      */
     std::string
     seas_station_header(const std::string &location,
                         const bool         test_mode,
-                        const bool         normal_stress = false);
+                        const bool         normal_stress = false,
+                        const std::string &state_name    = "log10_theta");
 
     /**
      * One data row of such a file: the time (s, 15 digits), the slip (m,
      * and the rest with 8), the log10
      * of the magnitude of the slip rate @p rate (m/s; -300 where it is 0),
      * the shear stress (MPa), the normal stress (MPa; only where
-     * @p normal_stress is not NaN) and the log10 of the state (s).
+     * @p normal_stress is not NaN) and the state (the law's first state
+     * output: the log10 of theta (s) for the laws of theta).
      */
     std::string
     seas_station_row(const double time,
