@@ -18,8 +18,8 @@ KEYS = {"base", "output", "ranks", "jobs", "sample", "seed", "nucleation size",
         "slurm cases per task"}
 
 OUTCOMES = ["ruptured the whole fault", "stopped by itself",
-            "died at nucleation", "aborted", "failed", "interrupted",
-            "not run"]
+            "died at nucleation", "earthquake cycles", "aborted", "failed",
+            "interrupted", "not run"]
 
 
 class SweepError(Exception):

@@ -109,6 +109,28 @@ def final_slip(directory):
             "y": frame.down_dip(snap.points), "slip": slip}
 
 
+CYCLE_KEYS = ("events", "recurrence", "event peak slip rate", "event slip")
+
+
+def cycle_columns(directory):
+    """The cycle columns of a case from its events.csv (None where it has
+    none, or too few events): the number of events, their recurrence
+    (years) and the mean peak slip rate and largest slip of the events
+    after the first two (those the initial state shapes less)."""
+    row = dict.fromkeys(CYCLE_KEYS)
+    catalogue = os.path.join(directory, "events.csv")
+    if not os.path.exists(catalogue):
+        return row
+    starts, peaks, slips = cycles.merge_events(
+        *cycles.read_catalogue(catalogue))
+    row["events"] = len(starts)
+    row["recurrence"] = cycles.recurrence(starts)
+    if row["recurrence"] is not None:
+        row["event peak slip rate"] = sum(peaks[2:]) / len(peaks[2:])
+        row["event slip"] = sum(slips[2:]) / len(slips[2:])
+    return row
+
+
 def summarise(sweep, cases):
     out = sweep["output"]
     rows = []
@@ -147,14 +169,11 @@ def summarise(sweep, cases):
                 d, sweep.get("nucleation size", 0), cs, dim)
         if "reference" in sweep and row["outcome"] is None:
             row.update(reference_errors(sweep["reference"], d))
-        # Earthquake cycles (runs with an event catalogue): the events
-        # and their recurrence (the mean interval after the first two).
-        row["events"], row["recurrence"] = None, None
-        catalogue = os.path.join(d, "events.csv")
-        if row["outcome"] is None and os.path.exists(catalogue):
-            starts = cycles.merge_events(*cycles.read_catalogue(catalogue))[0]
-            row["events"] = len(starts)
-            row["recurrence"] = cycles.recurrence(starts)
+        # Earthquake cycles (runs with an event catalogue): the events,
+        # their recurrence (the mean interval after the first two) and the
+        # mean peak slip rate and largest slip of those later events.
+        row.update(cycle_columns(d) if row["outcome"] is None else
+                   dict.fromkeys(CYCLE_KEYS))
         row["wall time"] = runner.get("wall time (s)")
         row["peak memory"] = summary.get("peak memory, all ranks (B)")
         rows.append(row)
@@ -170,6 +189,10 @@ def summarise(sweep, cases):
         if r["end"] in ("runaway", "wall-clock limit"):
             r["outcome"] = "aborted"
             r["message"] = r["end"]
+        elif r["events"] is not None and r["ruptured area"] is None:
+            # (A cycle run without one rupture's area: the boundary-
+            # integral method's; its measures are the cycle columns.)
+            r["outcome"] = "earthquake cycles"
         elif nucleation and (r["ruptured area"] or 0) <= 1.5 * nucleation:
             r["outcome"] = "died at nucleation"
         elif fault_size and (r["ruptured area"] or 0) >= \
@@ -240,6 +263,8 @@ COLUMNS = [("outcome", "outcome", None), ("end", "end", None),
            ("supershear fraction", "supershear fraction", "%.2f"),
            ("events", "events", "%d"),
            ("recurrence", "recurrence (years)", "%.3f"),
+           ("event peak slip rate", "event peak slip rate (m/s)", "%.4g"),
+           ("event slip", "slip per event (m)", "%.4g"),
            ("wall time", "wall time (s)", "%.1f"),
            ("peak memory", "peak memory (MB)", None),
            ("message", "message", None)]
@@ -300,7 +325,8 @@ def write_tables(sweep, rows, fault_size):
 
 
 MARKERS = {"ruptured the whole fault": "o", "stopped by itself": "s",
-           "died at nucleation": "v", "aborted": "X", "failed": "x",
+           "died at nucleation": "v", "earthquake cycles": "D",
+           "aborted": "X", "failed": "x",
            "interrupted": "+", "not run": "."}
 
 
@@ -314,6 +340,13 @@ def magnitude_of(row):
 
 
 def plot(sweep, rows, map_axes, panels_option=None):
+    """Draw the sweep's pictures; returns their file names."""
+    cycle_runs = any(r.get("events") is not None for r in rows)
+    if cycle_runs and not any(r.get("M0") for r in rows):
+        # Cycles of the boundary-integral method: no single rupture's size
+        # or slip to draw.
+        plot_cycles(sweep, rows)
+        return ["cycles.png"]
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -402,7 +435,8 @@ def plot(sweep, rows, map_axes, panels_option=None):
         ax.set_xlabel(a)
         ax.set_ylabel(mlabel)
         ax.grid(alpha=0.3)
-    axes[0][0].legend(fontsize=7)
+    if axes[0][0].get_legend_handles_labels()[0]:
+        axes[0][0].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "magnitude.png"), dpi=110)
     plt.close(fig)
@@ -437,4 +471,51 @@ def plot(sweep, rows, map_axes, panels_option=None):
                  ", ".join(v["alias"] for v in sweep["vary"]), fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "final-slip.png"), dpi=110)
+    plt.close(fig)
+
+    if cycle_runs:
+        plot_cycles(sweep, rows)
+        return ["outcome-map.png", "magnitude.png", "final-slip.png",
+                "cycles.png"]
+    return ["outcome-map.png", "magnitude.png", "final-slip.png"]
+
+
+def plot_cycles(sweep, rows):
+    """cycles.png for a sweep over earthquake cycles: the recurrence, the
+    slip per event and the events' peak slip rate against the first varied
+    entry, one line per value of the second."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    aliases = [v["alias"] for v in sweep["vary"]]
+    x = aliases[0]
+    group = aliases[1] if len(aliases) > 1 else None
+    groups = sorted({r[group] for r in rows}, key=float) if group else [None]
+    fig, axes = plt.subplots(1, 3, figsize=(12, 3.6))
+    keys = (("recurrence", "recurrence (years)"),
+            ("event slip", "slip per event (m)"),
+            ("event peak slip rate", "event peak slip rate (m/s)"))
+    xs_all = [float(r[x]) for r in rows]
+    log_x = min(xs_all) > 0 and max(xs_all) >= 4 * min(xs_all)
+    for g in groups:
+        sub = sorted((r for r in rows if group is None or r[group] == g),
+                     key=lambda r: float(r[x]))
+        for ax, (key, label) in zip(axes, keys):
+            pts = [(float(r[x]), r[key]) for r in sub
+                   if r.get(key) is not None]
+            if pts:
+                ax.plot(*zip(*pts), "o-",
+                        label=f"{group} = {g}" if group else None)
+            ax.set_xlabel(x)
+            ax.set_ylabel(label)
+            ax.grid(alpha=0.3)
+            if log_x:
+                ax.set_xscale("log")
+    axes[2].set_yscale("log")
+    if group:
+        axes[0].legend(fontsize=8)
+    fig.suptitle(sweep["title"] + "\nthe events after the first two",
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(sweep["output"], "cycles.png"), dpi=110)
     plt.close(fig)

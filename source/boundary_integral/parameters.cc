@@ -162,9 +162,10 @@ namespace rupture
                           "1e-8",
                           Patterns::Double(0),
                           "The error (> 0) below which a change does not "
-                          "matter: metres for the slip, and for the "
-                          "logarithm of a state variable that spans "
-                          "decades.");
+                          "matter: metres for the slip, and for each state "
+                          "variable of the friction law in its own units "
+                          "(in its logarithm for those that span decades, "
+                          "such as theta).");
         prm.declare_entry(
           "Sampling slip rate change",
           "0",

@@ -62,7 +62,24 @@ namespace rupture
       variables.assign(n_variables, std::vector<double>(n));
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int v = 0; v < n_variables; ++v)
-          variables[v][i] = states[i].variables[v];
+          {
+            variables[v][i] = states[i].variables[v];
+            // (Integrated in its logarithm, the state must be positive.)
+            AssertThrow(
+              !logarithmic[v] || variables[v][i] > 0,
+              ExcMessage(
+                "The friction law's state variable " + std::to_string(v + 1) +
+                (law.state_names().size() > v ?
+                   " (" + law.state_names()[v] + " in the output)" :
+                   std::string()) +
+                " is " + number(variables[v][i]) +
+                " at the fault element at depth " + number(geometry.depth(i)) +
+                " m; the boundary-integral method integrates it "
+                "in its logarithm, so it must be > 0. Give a "
+                "positive <Initial state> of the law in <Fault> "
+                "(with <Fault/Slowness law/Evolution effect> = 0 "
+                "the computed initial state is 0)."));
+          }
 
       // Rows by rank.
       const unsigned int ranks =

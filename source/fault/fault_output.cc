@@ -594,17 +594,15 @@ namespace rupture
       const auto records = fault.gather();
       if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
         return;
+      const auto        state_names = fault.friction().state_names();
+      const std::string first_state_name =
+        state_names.empty() ? std::string() : state_names[0];
       for (const auto &s : stations)
         {
           if (seas_format)
             {
-              directory.write(
-                s.name + ".dat",
-                seas_station(s,
-                             fault.friction().state_names().empty() ?
-                               std::string() :
-                               fault.friction().state_names()[0],
-                             test_mode));
+              directory.write(s.name + ".dat",
+                              seas_station(s, first_state_name, test_mode));
               continue;
             }
           std::ostringstream   out;
@@ -624,8 +622,6 @@ namespace rupture
           body << std::scientific << std::setprecision(7);
           // (The SCEC columns; those after them, with anisotropic
           // friction, go to <name>-rake.dat.)
-          const std::vector<std::string> state_names =
-            fault.friction().state_names();
           const unsigned int n_scec =
             7 + (state_names.empty() ? 0 : 1 + state_names.size());
           std::ostringstream rake;

@@ -1,4 +1,3 @@
-#include <rupture/base/utilities.h>
 #include <rupture/friction/chester.h>
 #include <rupture/friction/law_utilities.h>
 #include <rupture/friction/state_evolution.h>
@@ -121,15 +120,12 @@ namespace rupture
     {
       prm.enter_subsection("Chester");
       {
-        regularized      = (prm.get("Formulation") == "regularized");
-        const auto parse = [&](const std::string &entry) {
-          return parse_function(prm, entry);
-        };
+        regularized = (prm.get("Formulation") == "regularized");
         parse_constants(prm);
-        initial_temperature = parse("Initial temperature");
-        initial_rate        = parse("Initial slip rate");
+        initial_temperature = parse_function(prm, "Initial temperature");
+        initial_rate        = parse_function(prm, "Initial slip rate");
         if (!dealii::Utilities::trim(prm.get("Initial state")).empty())
-          initial_state = parse("Initial state");
+          initial_state = parse_function(prm, "Initial state");
       }
       prm.leave_subsection();
     }

@@ -12,12 +12,12 @@ namespace rupture
     RateStateFamily<n>::RateStateFamily(
       const std::string                  &section,
       const std::array<ConstantEntry, n> &entries,
-      const unsigned int                  slip_scale,
-      const unsigned int                  drop)
+      const unsigned int                  slip_scale_constant,
+      const unsigned int                  drop_constant)
       : section(section)
       , constant_entries(entries)
-      , slip_scale_index(slip_scale)
-      , drop_index(drop)
+      , slip_scale_index(slip_scale_constant)
+      , drop_index(drop_constant)
     {}
 
 
@@ -91,6 +91,19 @@ namespace rupture
 
 
     template <std::size_t n>
+    void
+    RateStateFamily<n>::check_state(const Point<3> &x, const State &state) const
+    {
+      AssertThrow(state.variables.size() == n_state_variables(),
+                  ExcMessage("The friction law in <Fault/" + section +
+                             "> was used at a point whose state was not "
+                             "initialised" +
+                             LawUtilities::at_point(x) + "."));
+    }
+
+
+
+    template <std::size_t n>
     double
     RateStateFamily<n>::coefficient(const Point<3> &x,
                                     const State    &old,
@@ -99,11 +112,7 @@ namespace rupture
                                     double         &derivative) const
     {
       const Constants c = constants(x, old);
-      AssertThrow(old.variables.size() == n_state_variables(),
-                  ExcMessage("The friction law in <Fault/" + section +
-                             "> was used at a point whose state was not "
-                             "initialised" +
-                             LawUtilities::at_point(x) + "."));
+      check_state(x, old);
       return LawUtilities::step_coefficient(
         slip_increment,
         dt,
@@ -127,6 +136,7 @@ namespace rupture
     {
       const Constants c      = constants(x, state);
       double          unused = 0;
+      check_state(x, state);
       return friction(c,
                       state.variables,
                       V,
@@ -155,6 +165,7 @@ namespace rupture
                                      const double    shear_traction,
                                      State          &updated) const
     {
+      check_state(x, old);
       Interface::update_state(
         x, old, slip_increment, dt, shear_traction, updated);
       const Constants c = constants(x, old);
@@ -179,6 +190,10 @@ namespace rupture
                                      const double,
                                      std::vector<double> &updated) const
     {
+      AssertThrow(n_state_variables() == 1,
+                  ExcMessage("The friction law in <Fault/" + section +
+                             "> has several state variables but no "
+                             "evolve_state() of its own."));
       double unused = 0;
       updated       = {evolve(c, old, V, dt, unused)};
     }
@@ -192,6 +207,7 @@ namespace rupture
                                    const double         V,
                                    std::vector<double> &rates) const
     {
+      check_state(x, state);
       state_rates(constants(x, state), state.variables, V, rates);
     }
 
@@ -238,6 +254,7 @@ namespace rupture
 
 
 
+    // (The header declares these extern.)
     template class RateStateFamily<5>;
     template class RateStateFamily<7>;
     template class RateStateFamily<8>;

@@ -1,4 +1,3 @@
-#include <rupture/base/utilities.h>
 #include <rupture/friction/law_utilities.h>
 #include <rupture/friction/slowness_law.h>
 #include <rupture/friction/state_evolution.h>

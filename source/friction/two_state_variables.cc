@@ -1,4 +1,3 @@
-#include <rupture/base/utilities.h>
 #include <rupture/friction/law_utilities.h>
 #include <rupture/friction/state_evolution.h>
 #include <rupture/friction/two_state_variables.h>
@@ -96,12 +95,9 @@ namespace rupture
     {
       prm.enter_subsection("Two state variables");
       {
-        const auto parse = [&](const std::string &entry) {
-          return parse_function(prm, entry);
-        };
         logarithmic = (prm.get("Formulation") == "logarithmic");
         parse_constants(prm);
-        initial_rate = parse("Initial slip rate");
+        initial_rate = parse_function(prm, "Initial slip rate");
         const bool
           first  = !dealii::Utilities::trim(prm.get("Initial state 1")).empty(),
           second = !dealii::Utilities::trim(prm.get("Initial state 2")).empty();
@@ -111,8 +107,8 @@ namespace rupture
                                "both be empty."));
         if (first)
           {
-            initial_state[0] = parse("Initial state 1");
-            initial_state[1] = parse("Initial state 2");
+            initial_state[0] = parse_function(prm, "Initial state 1");
+            initial_state[1] = parse_function(prm, "Initial state 2");
           }
       }
       prm.leave_subsection();

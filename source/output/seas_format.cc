@@ -74,7 +74,7 @@ namespace rupture
                      const double slip,
                      const double rate,
                      const double shear_stress,
-                     const double log10_state,
+                     const double state,
                      const double normal_stress)
     {
       std::ostringstream out;
@@ -88,7 +88,7 @@ namespace rupture
           << shear_stress << " ";
       if (!std::isnan(normal_stress))
         out << normal_stress << " ";
-      out << log10_state << "\n";
+      out << state << "\n";
       return out.str();
     }
 

@@ -440,6 +440,14 @@ main(int argc, char **argv)
   };
   check("the boundary-integral method with a law without a state rate",
         boundary_integral("Fault/Friction law=linear slip weakening"));
+  {
+    auto arguments = boundary_integral("Fault/Friction law=slowness law");
+    arguments.insert(arguments.end(),
+                     {"--set", "Fault/Slowness law/Initial state=0"});
+    check("the boundary-integral method with a state of 0, which it "
+          "integrates in its logarithm",
+          arguments);
+  }
   check("the boundary-integral method with elements of 0 m",
         boundary_integral("Boundary integral/Element size=0"));
   check("the boundary-integral method with a station off the fault",

@@ -67,12 +67,6 @@ namespace rupture
                        const double    initial_friction,
                        State          &state) const override;
 
-      bool
-      state_interpolates_in_logarithm(const unsigned int i) const override
-      {
-        return i == 0;
-      }
-
       std::vector<std::string>
       state_names() const override
       {

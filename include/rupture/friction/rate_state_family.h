@@ -73,14 +73,14 @@ namespace rupture
 
       /**
        * The law with the subsection @p section ("Rate and state") and the
-       * constants @p entries; constant @p slip_scale is the slip over which
-       * the state evolves and @p drop the strength drop per unit pressure
-       * over it (for the process-zone width).
+       * constants @p entries; constant @p slip_scale_constant is the slip
+       * over which the state evolves and @p drop_constant the strength drop
+       * per unit pressure over it (for the process-zone width).
        */
       RateStateFamily(const std::string                  &section,
                       const std::array<ConstantEntry, n> &entries,
-                      const unsigned int                  slip_scale,
-                      const unsigned int                  drop);
+                      const unsigned int                  slip_scale_constant,
+                      const unsigned int                  drop_constant);
 
       double
       coefficient(const Point<3> &x,
@@ -228,6 +228,13 @@ namespace rupture
       constants(const Point<3> &x, const State &state) const;
 
       /**
+       * Throw unless @p state holds the law's state variables (it was
+       * initialised).
+       */
+      void
+      check_state(const Point<3> &x, const State &state) const;
+
+      /**
        * LawUtilities::require() in the law's subsection.
        */
       void
@@ -246,6 +253,13 @@ namespace rupture
       const unsigned int                                drop_index;
       std::array<std::unique_ptr<FunctionParser<3>>, n> functions;
     };
+
+    // The laws' numbers of constants (instantiated in
+    // rate_state_family.cc): a law with another number adds its own.
+    extern template class RateStateFamily<5>;
+    extern template class RateStateFamily<7>;
+    extern template class RateStateFamily<8>;
+    extern template class RateStateFamily<11>;
   } // namespace Friction
 } // namespace rupture
 

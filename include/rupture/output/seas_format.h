@@ -39,7 +39,7 @@ namespace rupture
                      const double slip,
                      const double rate,
                      const double shear_stress,
-                     const double log10_state,
+                     const double state,
                      const double normal_stress = std::nan(""));
 
     /**
