@@ -294,11 +294,12 @@ namespace rupture
                                const std::vector<double> &old,
                                const double               V,
                                const double               dt,
-                               const double,
-                               std::vector<double> &updated) const
+                               const double               shear_traction,
+                               std::vector<double>       &updated) const
     {
-      double unused = 0;
-      updated       = {evolve(c, old, V, dt, unused)};
+      // The family's update of the one variable, then its check.
+      RateStateFamily<5>::evolve_state(
+        x, c, old, V, dt, shear_traction, updated);
       AssertThrow(std::isfinite(updated[0]) && updated[0] > 0,
                   ExcMessage(
                     "The rate-and-state state variable theta left "
