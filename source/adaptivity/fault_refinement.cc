@@ -254,7 +254,9 @@ namespace rupture
                                std::ldexp(time_step, finest - int(reach)) :
                                2 * time_step;
         }
-      front = std::make_unique<FrontCriterion<dim>>(active, band_for(step));
+      front = std::make_unique<FrontCriterion<dim>>(active,
+                                                    band_for(step),
+                                                    parameters.graded_band);
       // The wavefield's band: as far as a P wave travels until the next
       // adaptation, with the steps to come: shorter where the front refines
       // beyond the finest cells. (Not twice the step, as for the front: the

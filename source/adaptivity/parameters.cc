@@ -131,6 +131,18 @@ namespace rupture
                           "Distance (m) added to the band ahead of the "
                           "front that is refined.");
         prm.declare_entry(
+          "Graded band",
+          "false",
+          Patterns::Bool(),
+          "With \"rupture front\" and <Levels> above 1: the cells ahead of "
+          "the band are refined in rings, one level less per band's width "
+          "(a cell <Levels> - k levels above its base mesh is refined where "
+          "a node is active within k bands), so that the front, which "
+          "travels at most a band between two adaptations, finds every cell "
+          "at most one level short and each adaptation makes one new mesh "
+          "instead of one per level. false: the band's cells go to the "
+          "finest level at once and the cells beyond it stay as they are.");
+        prm.declare_entry(
           "Balance after adaptation",
           "true",
           Patterns::Bool(),
@@ -180,6 +192,7 @@ namespace rupture
       slip_rate_threshold = prm.get_double("Slip rate threshold");
       coarsening_delay    = prm.get_double("Coarsening delay");
       extra_band          = prm.get_double("Extra band");
+      graded_band         = prm.get_bool("Graded band");
       balance             = prm.get_bool("Balance after adaptation");
       wavefield_threshold = prm.get_double("Wavefield threshold");
       wavefield_levels    = prm.get_integer("Wavefield levels");

@@ -58,6 +58,7 @@ namespace rupture
       timer.leave_subsection();
       timer.enter_subsection("Refinement: new mesh");
       mesh.execute_coarsening_and_refinement();
+      ++meshes_made;
       carried->unpack();
       // So before a later mesh the fields are made to follow the hanging
       // constraints of the coarsened one, on its DoFs (once).
@@ -101,6 +102,7 @@ namespace rupture
           mesh.repartition();
         else
           mesh.execute_coarsening_and_refinement();
+        ++meshes_made;
         carried->unpack();
       };
       unsigned int alike_rounds = 0;

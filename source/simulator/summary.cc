@@ -53,7 +53,8 @@ namespace rupture
       }
     if (mesh_refinement.enabled())
       pcout << "   Mesh refinement: " << fault_refinement->n_adaptations()
-            << " adaptations in " << fault_refinement->seconds()
+            << " adaptations (" << discretization.n_meshes_made()
+            << " new meshes) in " << fault_refinement->seconds()
             << " s (with those before the first step, if made), "
             << cost.peak_dofs << " DoFs at the peak, " << cost.dof_steps
             << " DoF-steps\n";
@@ -207,6 +208,7 @@ namespace rupture
     if (mesh_refinement.enabled())
       out << "  \"mesh adaptations\": " << fault_refinement->n_adaptations()
           << ",\n"
+          << "  \"meshes made\": " << discretization.n_meshes_made() << ",\n"
           << "  \"peak dofs\": " << json_number(cost.peak_dofs) << ",\n"
           << "  \"dof-steps\": " << json_number(cost.dof_steps) << ",\n"
           << "  \"adaptation wall time\": "

@@ -15,6 +15,12 @@
 //   within the same bounds;
 // - the energy balance closes, with the energy the interpolation added
 //   counted apart and small;
+// - with <Graded band> (rings one level coarser per band ahead of the
+//   band), three levels and a band of 40 steps (several of the finest
+//   cells wide): rupture times, final slips and peak slip rates as with
+//   the plain band of the same levels, and one new mesh per adaptation
+//   (the first one apart, which refines <Levels> times), fewer than the
+//   plain band's, which refines some cells several levels at once;
 // - a checkpoint written after an adaptation continues to the same end
 //   (statistics and stations to 1e-12), also on two or three processes
 //   when one process wrote it.
@@ -134,6 +140,12 @@ main(int argc, char **argv)
   const int code_coarse =
     run("coarse",
         {"Scene/Box/Number of cells=32,16", "Mesh refinement/Criteria="});
+  const std::vector<std::string> wide_band   = {"Mesh refinement/Levels=3",
+                                                "Mesh refinement/Interval=40"};
+  const int                      code_wide   = run("wide", wide_band);
+  std::vector<std::string>       graded_band = wide_band;
+  graded_band.push_back("Mesh refinement/Graded band=true");
+  const int code_graded     = run("graded", graded_band);
   const int code_coarsening = run("coarsening",
                                   {"Mesh refinement/Slip rate threshold=1.5",
                                    "Mesh refinement/Coarsening delay=0.3"});
@@ -186,12 +198,16 @@ main(int argc, char **argv)
   const Result fine       = result_of("fine", code_fine);
   const Result coarse     = result_of("coarse", code_coarse);
   const Result coarsening = result_of("coarsening", code_coarsening);
+  const Result graded     = result_of("graded", code_graded);
+  const Result wide       = result_of("wide", code_wide);
   std::printf("exit codes: adaptive %d, fine %d, coarse %d, coarsening %d, "
-              "checkpointed %d, resumed %d\n",
+              "wide %d, graded %d, checkpointed %d, resumed %d\n",
               adaptive.code,
               fine.code,
               coarse.code,
               coarsening.code,
+              wide.code,
+              graded.code,
               code_checkpoint,
               code_resumed);
 
@@ -259,6 +275,47 @@ main(int argc, char **argv)
               yes(coarsening.last_dofs < coarsening.peak_dofs),
               largest_gap(coarsening.node_x,
                           [](double x) { return std::abs(x) < 1000; }));
+
+  // New meshes per adaptation, from summary.json.
+  const auto meshes = [](const std::string &directory) {
+    const std::string summary = directory + "/summary.json";
+    return std::make_pair(tests::find_number(summary, "\"mesh adaptations\": "),
+                          tests::find_number(summary, "\"meshes made\": "));
+  };
+  const auto [wide_adaptations, wide_meshes]     = meshes("wide");
+  const auto [graded_adaptations, graded_meshes] = meshes("graded");
+  double worst_time                              = 0;
+  for (const auto &[x, t] : wide.rupture_time)
+    if (std::abs(x) <= 5000 && t < 1e8)
+      {
+        const auto other = graded.rupture_time.find(x);
+        worst_time       = other == graded.rupture_time.end() ?
+                             1e9 :
+                             std::max(worst_time, std::abs(other->second - t));
+      }
+  bool slips = true, rates = true;
+  for (unsigned int s = 0; s < 2; ++s)
+    {
+      slips =
+        slips && std::abs(graded.slip[s] - wide.slip[s]) < 5e-3 * wide.slip[s];
+      rates = rates && std::abs(graded.peak_rate[s] - wide.peak_rate[s]) <
+                         0.02 * wide.peak_rate[s];
+    }
+  std::printf("graded band against the plain band, three levels: rupture "
+              "times to 5 km within 0.005 s: %s, final slips within 0.5 %%: "
+              "%s, peak slip rates within 2 %%: %s; new meshes: plain %.0f "
+              "in %.0f adaptations, graded %.0f in %.0f: one per adaptation "
+              "but the first's three: %s\n",
+              yes(worst_time < 5e-3),
+              yes(slips),
+              yes(rates),
+              wide_meshes,
+              wide_adaptations,
+              graded_meshes,
+              graded_adaptations,
+              yes(graded_adaptations > 3 &&
+                  graded_meshes <= graded_adaptations + 2 &&
+                  graded_meshes < wide_meshes));
 
   // The continued run against the uninterrupted one.
   const auto same = [](const std::string &a, const std::string &b) {

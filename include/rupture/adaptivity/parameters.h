@@ -57,6 +57,9 @@ namespace rupture
       double coarsening_delay = -1;
       /// Added to the band ahead of the front (m).
       double extra_band = 0;
+      /// The cells ahead of the band are refined in rings, one level less
+      /// per band's width (FrontCriterion).
+      bool graded_band = false;
       /// After each adaptation in an implicit dynamic phase that follows a
       /// loading phase: move the displacement into balance on the new mesh
       /// (TimeIntegration::Interface::balance_displacement()).

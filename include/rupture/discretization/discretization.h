@@ -125,6 +125,13 @@ namespace rupture
              const std::function<bool()> &reflag,
              const std::function<void()> &setup,
              TimerOutput                 &timer);
+      /// The meshes that refine() has made so far (each refinement pass,
+      /// each round for the fault's sides and each repartition is one).
+      unsigned int
+      n_meshes_made() const
+      {
+        return meshes_made;
+      }
       /**
        * The mesh's partition: for each rank, its number of locally owned
        * cells and of those with a face on the fault. Collective.
@@ -328,6 +335,8 @@ namespace rupture
       unsigned int                         region_refinements = 0;
       /// <Fault cell weight>: a fault cell's share of the partition.
       double fault_cell_weight = 1;
+      /// n_meshes_made().
+      unsigned int meshes_made = 0;
       /// The level of the scene's cells as it builds them (a box of blocks
       /// refines its blocks itself): the base of base_level().
       unsigned int                              scene_levels = 0;
