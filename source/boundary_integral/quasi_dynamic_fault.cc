@@ -58,7 +58,11 @@ namespace rupture
         }
       n_variables = states.empty() ? 0 : states[0].variables.size();
       for (unsigned int v = 0; v < n_variables; ++v)
-        logarithmic.push_back(law.state_interpolates_in_logarithm(v));
+        {
+          logarithmic.push_back(law.state_interpolates_in_logarithm(v));
+          if (law.state_relaxes(v))
+            relaxing_variables.push_back(v);
+        }
       variables.assign(n_variables, std::vector<double>(n));
       for (unsigned int i = 0; i < n; ++i)
         for (unsigned int v = 0; v < n_variables; ++v)
@@ -295,6 +299,46 @@ namespace rupture
       std::vector<double> rate;
       rates(t, y, rate);
       accept(y, rate);
+      set_heating();
+    }
+
+
+
+    void
+    QuasiDynamicFault::set_heating()
+    {
+      heating.resize(n);
+      for (unsigned int i = 0; i < n; ++i)
+        heating[i] = std::abs(traction[i]) * velocity[i];
+    }
+
+
+
+    std::vector<double>
+    QuasiDynamicFault::relax(const double         t,
+                             std::vector<double> &y,
+                             const double         dt)
+    {
+      // (Every rank holds all of y and advances every element alike.)
+      Friction::State state;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          unpack_state(i, y, state);
+          law.relax_state(points[i],
+                          state,
+                          0.5 *
+                            (heating[i] + std::abs(traction[i]) * velocity[i]),
+                          dt);
+          for (const unsigned int v : relaxing_variables)
+            y[(1 + v) * std::size_t(n) + i] = logarithmic[v] ?
+                                                std::log(state.variables[v]) :
+                                                state.variables[v];
+        }
+      std::vector<double> rate;
+      rates(t, y, rate);
+      accept(y, rate);
+      set_heating();
+      return rate;
     }
 
 
@@ -446,6 +490,7 @@ namespace rupture
         normal_now = fields[5];
       signed_velocity = velocity;
       variables       = state;
+      set_heating();
     }
 
 

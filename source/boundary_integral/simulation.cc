@@ -281,6 +281,8 @@ namespace rupture
           clock.dt_min = std::min(clock.dt_min, clock.last_dt);
           clock.dt_max = std::max(clock.dt_max, clock.last_dt);
           fault.accept(y, integrator.last_rate());
+          if (fault.relaxing())
+            integrator.restart(fault.relax(t, y, clock.last_dt));
           const bool ended = events.record(fault, t);
           output.record(t,
                         clock.steps,

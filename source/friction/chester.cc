@@ -311,6 +311,39 @@ namespace rupture
       updated = {theta, T_new};
     }
 
+    void
+    Chester::state_rates(const Constants           &c,
+                         const std::vector<double> &variables,
+                         const double               V,
+                         std::vector<double>       &rates) const
+    {
+      double unused = 0;
+      rates.assign(2, 0.);
+      if (V > 0)
+        rates[0] = V / c[2] *
+                   (steady_state(c, V, variables.at(1), unused) - variables[0]);
+    }
+
+
+
+    void
+    Chester::relax(const Constants     &c,
+                   std::vector<double> &variables,
+                   const double         heating,
+                   const double         dt) const
+    {
+      const double T = heat(c, variables.at(1), heating, dt);
+      AssertThrow(std::isfinite(T) && T > 0,
+                  ExcMessage("The temperature of Chester's law left the "
+                             "positive numbers (" +
+                             std::to_string(T) +
+                             " K). Lower the heating (raise <Fault/Chester/"
+                             "Heat capacity per area>)."));
+      variables[1] = T;
+    }
+
+
+
     RUPTURE_REGISTER_FRICTION_LAW(
       Chester,
       "chester",

@@ -215,6 +215,19 @@ namespace rupture
 
     template <std::size_t n>
     void
+    RateStateFamily<n>::relax_state(const Point<3> &x,
+                                    State          &state,
+                                    const double    heating,
+                                    const double    dt) const
+    {
+      check_state(x, state);
+      relax(constants(x, state), state.variables, heating, dt);
+    }
+
+
+
+    template <std::size_t n>
+    void
     RateStateFamily<n>::state_rates(const Constants &,
                                     const std::vector<double> &,
                                     const double,

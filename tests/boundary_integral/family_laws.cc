@@ -8,6 +8,10 @@
 //   state a ln(2 V0 / V sinh(f_LV / a)) is f0 - b ln(V / V0) to round-off);
 // - two state variables with B2 = 0 and th2 = 0 are the slip law in the
 //   additive state th1 = b ln(V0 theta / L), regularised or logarithmic;
+// - Chester's law without activation enthalpies (Q_A = Q_B = 0) is the
+//   regularised slip law in theta = ln(V0 theta / L), however its
+//   temperature (advanced outside the integrator, warmed by the friction)
+//   evolves;
 // - the slowness law with cut-offs far away (Vinf = 1e20 m/s,
 //   theta0 = 1e-20 s, V0 = V1 = 0) is the logarithmic aging law with
 //   mu0 = f0 - a ln V0 + b ln(V0 / L) + a ln Vinf + b ln theta0.
@@ -138,6 +142,19 @@ main(int argc, char **argv)
   };
   compare("two state variables, B2 = 0",
           events("two", two_states("regularized")),
+          slip);
+  const std::string cs = "Fault/Chester/";
+  compare("chester, Q_A = Q_B = 0",
+          events("chester",
+                 {"Fault/Friction law=chester",
+                  cs + "Direct effect=" + number(a),
+                  cs + "Evolution effect=" + number(b),
+                  cs + "Characteristic slip distance=" + number(L),
+                  cs + "Reference friction coefficient=" + number(f0),
+                  cs + "Reference slip rate=" + number(V0),
+                  cs + "Direct activation enthalpy=0",
+                  cs + "Evolution activation enthalpy=0",
+                  cs + "Initial state=" + number(std::log(V0 * theta / L))}),
           slip);
 
   std::printf("The slip law, logarithmic\n");

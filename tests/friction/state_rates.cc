@@ -6,8 +6,10 @@
 // - the coefficient at a rate with the state held (coefficient_at_rate(),
 //   the split nodes' friction) against the coefficient of a vanishing step
 //   (coefficient(), the penalty return map's);
-// - a law without rates (Chester's, whose temperature needs the traction)
-//   says so when asked.
+// - Chester's law: theta's rate (its temperature relaxes by itself over
+//   t_c and is left to relax_state(), which gives the temperature that the
+//   volume method's step reaches under the same heating; at T = T_r
+//   without heating it stays, and its rate is 0).
 
 #include <rupture/friction/interface.h>
 
@@ -144,27 +146,36 @@ main(int argc, char **argv)
               {{"Formulation", "regularized"}}),
         0.6);
 
-  const auto chester = make("chester", "Chester", none);
-  State      state;
+  check("chester", *make("chester", "Chester", none), 0.6);
+  check("chester, logarithmic",
+        *make("chester", "Chester", {{"Formulation", "logarithmic"}}),
+        0.6);
+
+  // relax_state() against the step of update_state() under a traction
+  // (from 600 K, a 1 MPa traction, slip rates from rest to 1 m/s, steps
+  // short and long against t_c = 1 s).
+  const auto chester =
+    make("chester", "Chester", {{"Initial temperature", "600"}});
+  std::printf("chester: state_relaxes() = %s, %s\n",
+              chester->state_relaxes(0) ? "true" : "false",
+              chester->state_relaxes(1) ? "true" : "false");
+  State state;
   chester->initialize_state(origin, 0.6, state);
-  std::printf("chester: has_state_rate() = %s\n",
-              chester->has_state_rate() ? "true" : "false");
-  try
-    {
-      std::vector<double> rates;
-      chester->state_rate(origin, state, 1e-6, rates);
-      std::printf("   state_rate() did not refuse\n");
-    }
-  catch (const std::exception &e)
-    {
-      const std::string what = e.what();
-      // (The message, without deal.II's stack trace.)
-      const auto at  = what.find("The friction law in");
-      const auto end = what.find("Stacktrace");
-      std::printf(
-        "   refused: %s\n",
-        at == std::string::npos ?
-          "(no message)" :
-          what.substr(at, end == std::string::npos ? end : end - at).c_str());
-    }
+  double worst      = 0;
+  bool   theta_kept = true;
+  for (const double V : {0., 1e-6, 1e-3, 1.})
+    for (const double dt : {1e-3, 1., 1e3})
+      {
+        State stepped, relaxed = state;
+        chester->update_state(origin, state, V * dt, dt, 1e6, stepped);
+        chester->relax_state(origin, relaxed, 1e6 * V, dt);
+        worst      = std::max(worst,
+                         std::abs(relaxed.variables[1] - stepped.variables[1]) /
+                           stepped.variables[1]);
+        theta_kept = theta_kept && relaxed.variables[0] == state.variables[0];
+      }
+  std::printf("   relax_state(): the temperature within 1e-14 of the step's: "
+              "%s; theta left as it was: %s\n",
+              worst < 1e-14 ? "yes" : "no",
+              theta_kept ? "yes" : "no");
 }

@@ -96,6 +96,29 @@ namespace rupture
       void
       accept(const std::vector<double> &y, const std::vector<double> &rate);
 
+      /// Whether the law has state variables that relax by themselves
+      /// (Friction::Interface::state_relaxes(): Chester's temperature),
+      /// which the integrator leaves alone and relax() advances.
+      bool
+      relaxing() const
+      {
+        return !relaxing_variables.empty();
+      }
+
+      /**
+       * After an accepted step of length @p dt to (@p t, @p y), accept()ed:
+       * advance the relaxing state variables in @p y exactly over the step
+       * (Friction::Interface::relax_state()), under the mean of the
+       * frictional heating (|traction| times the slip rate) at the step's
+       * start and end, and evaluate the fault anew. Returns the rates at
+       * the new @p y: the first stage of the integrator's next step.
+       * (Splitting the step so is first order in the coupling's step
+       * error; the explicit pair alone would need steps shorter than the
+       * relaxation time over years of loading.) Collective.
+       */
+      std::vector<double>
+      relax(const double t, std::vector<double> &y, const double dt);
+
       unsigned int
       size() const
       {
@@ -225,6 +248,13 @@ namespace rupture
         {std::numeric_limits<double>::infinity(), 0.};
       unsigned int                     opening_at = 0;
       std::vector<std::vector<double>> variables;
+      /// The state variables that relax (relaxing()), and the frictional
+      /// heating (W/m^2) of every element at the start of the step.
+      std::vector<unsigned int> relaxing_variables;
+      std::vector<double>       heating;
+      /// heating from the last accepted traction and slip rate.
+      void
+      set_heating();
       // The open event.
       std::vector<double> event_start, event_peak;
     };

@@ -86,6 +86,21 @@ namespace rupture
         return true;
       }
 
+      /// The fault-only solver integrates theta; the temperature relaxes
+      /// over t_c and is advanced exactly per step (relax()).
+      bool
+      has_state_rate() const override
+      {
+        return true;
+      }
+
+      /// The temperature.
+      bool
+      state_relaxes(const unsigned int v) const override
+      {
+        return v == 1;
+      }
+
       /// The gas constant R (J/(mol K)).
       static constexpr double gas_constant = 8.314462618;
 
@@ -161,6 +176,21 @@ namespace rupture
                    const double               dt,
                    const double               shear_traction,
                    std::vector<double>       &updated) const override;
+
+      /// d theta / dt = (V / d_c)(theta_ss(V, T) - theta) (0 at V = 0);
+      /// 0 for the temperature, which relax() advances.
+      void
+      state_rates(const Constants           &c,
+                  const std::vector<double> &variables,
+                  const double               V,
+                  std::vector<double>       &rates) const override;
+
+      /// The temperature after @p dt under the heating @p heating (heat()).
+      void
+      relax(const Constants     &c,
+            std::vector<double> &variables,
+            const double         heating,
+            const double         dt) const override;
 
     private:
       bool                               regularized = true;

@@ -295,6 +295,38 @@ namespace rupture
                  std::vector<double> &rates) const;
 
       /**
+       * Whether state variable @p v relaxes by itself over a time of its
+       * own towards a value set by the frictional heating (Chester's
+       * temperature): stiff for an explicit integrator over years of
+       * loading, so state_rate() gives 0 for it and relax_state() advances
+       * it exactly over a step, with the heating held.
+       */
+      virtual bool
+      state_relaxes(const unsigned int v) const
+      {
+        (void)v;
+        return false;
+      }
+
+      /**
+       * Advance the variables of @p state that relax (state_relaxes())
+       * over @p dt under the frictional heating @p heating (the shear
+       * traction times the slip rate, W/m^2, held over the step), exactly;
+       * the others stay. Nothing for laws without such variables.
+       */
+      virtual void
+      relax_state(const Point<3> &x,
+                  State          &state,
+                  const double    heating,
+                  const double    dt) const
+      {
+        (void)x;
+        (void)state;
+        (void)heating;
+        (void)dt;
+      }
+
+      /**
        * Whether process_zone_width() gives an estimate: a mesh that
        * refines to the process zone needs it.
        */

@@ -112,6 +112,12 @@ namespace rupture
                  const double         V,
                  std::vector<double> &rates) const final;
 
+      void
+      relax_state(const Point<3> &x,
+                  State          &state,
+                  const double    heating,
+                  const double    dt) const final;
+
       double
       slip_scale(const Point<3> &x, const State &state) const override;
 
@@ -189,6 +195,23 @@ namespace rupture
                   const std::vector<double> &variables,
                   const double               V,
                   std::vector<double>       &rates) const;
+
+      /**
+       * Advance the variables of @p variables that relax (state_relaxes())
+       * over @p dt under the heating @p heating (W/m^2), exactly (laws
+       * with such variables override it; the default has none).
+       */
+      virtual void
+      relax(const Constants     &c,
+            std::vector<double> &variables,
+            const double         heating,
+            const double         dt) const
+      {
+        (void)c;
+        (void)variables;
+        (void)heating;
+        (void)dt;
+      }
 
       /**
        * The number of state variables (1 unless a law says otherwise).

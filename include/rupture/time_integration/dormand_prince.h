@@ -58,6 +58,16 @@ namespace rupture
               double              &dt,
               const double         t_end);
 
+      /// The solution was changed after the last accepted step (by a part
+      /// of the equations advanced outside the pair): @p rate, the rates at
+      /// the changed solution, is the first stage of the next step.
+      void
+      restart(const std::vector<double> &rate)
+      {
+        k[0]             = rate;
+        have_first_stage = true;
+      }
+
       /// The number of rejected steps so far.
       unsigned long
       rejected_steps() const
