@@ -90,8 +90,15 @@ namespace tests
   {
     namespace fs            = std::filesystem;
     const std::string where = directory + "/checkpoint/boundary_integral";
-    fs::remove(where + ".bin");
-    fs::rename(where + ".previous.bin", where + ".bin");
+    // (One process moves the files; the others wait for it.)
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0)
+      {
+        fs::remove(where + ".bin");
+        fs::rename(where + ".previous.bin", where + ".bin");
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
     std::vector<std::string> resume = {prm, "--resume"};
     for (const auto &s : settings)
       resume.insert(resume.end(), {"--set", s});

@@ -269,6 +269,11 @@ namespace rupture
           velocity[i]    = V; // the next solve's first guess
           local[r]       = tau < 0 ? -V : V;
           law.state_rate(points[i], state, V, state_rates);
+          // (The relaxing variables change at the rates of the step's
+          // start, which relax() replaces by their exact change.)
+          if (!held_rates.empty())
+            for (const unsigned int v : relaxing_variables)
+              state_rates[v] = held_rates[v][i];
           for (unsigned int v = 0; v < n_variables; ++v)
             local[(1 + v) * std::size_t(owned) + r] =
               logarithmic[v] ? state_rates[v] / state.variables[v] :
@@ -310,6 +315,21 @@ namespace rupture
       heating.resize(n);
       for (unsigned int i = 0; i < n; ++i)
         heating[i] = std::abs(traction[i]) * velocity[i];
+      if (relaxing_variables.empty())
+        return;
+      held_rates.assign(n_variables, std::vector<double>(n, 0.));
+      held_start = variables;
+      Friction::State     state;
+      std::vector<double> rates;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          state = states[i];
+          for (unsigned int v = 0; v < n_variables; ++v)
+            state.variables[v] = variables[v][i];
+          law.relaxation_rate(points[i], state, heating[i], rates);
+          for (const unsigned int v : relaxing_variables)
+            held_rates[v][i] = rates[v];
+        }
     }
 
 
@@ -324,6 +344,9 @@ namespace rupture
       for (unsigned int i = 0; i < n; ++i)
         {
           unpack_state(i, y, state);
+          // (From the step's start: y holds them moved at the held rates.)
+          for (const unsigned int v : relaxing_variables)
+            state.variables[v] = held_start[v][i];
           law.relax_state(points[i],
                           state,
                           0.5 *
@@ -338,6 +361,12 @@ namespace rupture
       rates(t, y, rate);
       accept(y, rate);
       set_heating();
+      // (The new step's held rates, in its first stage.)
+      for (const unsigned int v : relaxing_variables)
+        for (unsigned int i = 0; i < n; ++i)
+          rate[(1 + v) * std::size_t(n) + i] =
+            logarithmic[v] ? held_rates[v][i] / variables[v][i] :
+                             held_rates[v][i];
       return rate;
     }
 

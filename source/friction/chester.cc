@@ -344,6 +344,19 @@ namespace rupture
 
 
 
+    void
+    Chester::relaxation_rates(const Constants           &c,
+                              const std::vector<double> &variables,
+                              const double               heating,
+                              std::vector<double>       &rates) const
+    {
+      const double T_r = c[8], H = c[9], t_c = c[10];
+      rates.assign(2, 0.);
+      rates[1] = heating / H - (variables.at(1) - T_r) / t_c;
+    }
+
+
+
     RUPTURE_REGISTER_FRICTION_LAW(
       Chester,
       "chester",

@@ -228,6 +228,19 @@ namespace rupture
 
     template <std::size_t n>
     void
+    RateStateFamily<n>::relaxation_rate(const Point<3>      &x,
+                                        const State         &state,
+                                        const double         heating,
+                                        std::vector<double> &rates) const
+    {
+      check_state(x, state);
+      relaxation_rates(constants(x, state), state.variables, heating, rates);
+    }
+
+
+
+    template <std::size_t n>
+    void
     RateStateFamily<n>::state_rates(const Constants &,
                                     const std::vector<double> &,
                                     const double,

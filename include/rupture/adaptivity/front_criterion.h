@@ -30,7 +30,7 @@ namespace rupture
      * keeps a cell from being refined and coarsened in turn.
      *
      * Graded, a cell k levels below the finest is refined where a node
-     * lies within k bands (and coarsened where none lies within twice k + 1
+     * lies within k bands (and coarsened where none lies within 2 (k + 1)
      * bands): rings ahead of the band, one level coarser per band's width.
      * A front that travels at most a band between two adaptations then
      * finds each cell at most one level short, so that an adaptation needs

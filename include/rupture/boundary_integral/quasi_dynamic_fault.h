@@ -252,7 +252,12 @@ namespace rupture
       /// heating (W/m^2) of every element at the start of the step.
       std::vector<unsigned int> relaxing_variables;
       std::vector<double>       heating;
-      /// heating from the last accepted traction and slip rate.
+      /// The relaxing variables at the start of the step and their rates
+      /// there (by variable, then element), which rates() holds through
+      /// the step; relax() advances them from the start anew.
+      std::vector<std::vector<double>> held_start, held_rates;
+      /// heating and held_rates from the last accepted traction, slip rate
+      /// and state.
       void
       set_heating();
       // The open event.

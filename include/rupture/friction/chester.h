@@ -192,6 +192,13 @@ namespace rupture
             const double         heating,
             const double         dt) const override;
 
+      /// dT/dt = heating / H - (T - T_r) / t_c.
+      void
+      relaxation_rates(const Constants           &c,
+                       const std::vector<double> &variables,
+                       const double               heating,
+                       std::vector<double>       &rates) const override;
+
     private:
       bool                               regularized = true;
       std::unique_ptr<FunctionParser<3>> initial_state;

@@ -327,6 +327,24 @@ namespace rupture
       }
 
       /**
+       * The rates of change of the variables of @p state that relax
+       * (state_relaxes()) under the heating @p heating (W/m^2), one per
+       * state variable in @p rates (0 for the others): an integrator holds
+       * them over a step, so that the other variables see the relaxing
+       * ones change linearly through it.
+       */
+      virtual void
+      relaxation_rate(const Point<3>      &x,
+                      const State         &state,
+                      const double         heating,
+                      std::vector<double> &rates) const
+      {
+        (void)x;
+        (void)heating;
+        rates.assign(state.variables.size(), 0.);
+      }
+
+      /**
        * Whether process_zone_width() gives an estimate: a mesh that
        * refines to the process zone needs it.
        */

@@ -118,6 +118,12 @@ namespace rupture
                   const double    heating,
                   const double    dt) const final;
 
+      void
+      relaxation_rate(const Point<3>      &x,
+                      const State         &state,
+                      const double         heating,
+                      std::vector<double> &rates) const final;
+
       double
       slip_scale(const Point<3> &x, const State &state) const override;
 
@@ -211,6 +217,21 @@ namespace rupture
         (void)variables;
         (void)heating;
         (void)dt;
+      }
+
+      /**
+       * The rates of change of the variables that relax under the heating
+       * @p heating (0 for the others; the default has none).
+       */
+      virtual void
+      relaxation_rates(const Constants           &c,
+                       const std::vector<double> &variables,
+                       const double               heating,
+                       std::vector<double>       &rates) const
+      {
+        (void)c;
+        (void)heating;
+        rates.assign(variables.size(), 0.);
       }
 
       /**
