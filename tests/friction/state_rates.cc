@@ -161,7 +161,7 @@ main(int argc, char **argv)
               chester->state_relaxes(1) ? "true" : "false");
   State state;
   chester->initialize_state(origin, 0.6, state);
-  double worst      = 0;
+  double worst = 0, worst_rate = 0;
   bool   theta_kept = true;
   for (const double V : {0., 1e-6, 1e-3, 1.})
     for (const double dt : {1e-3, 1., 1e3})
@@ -173,9 +173,26 @@ main(int argc, char **argv)
                          std::abs(relaxed.variables[1] - stepped.variables[1]) /
                            stepped.variables[1]);
         theta_kept = theta_kept && relaxed.variables[0] == state.variables[0];
+        // relaxation_rate() against relax_state() over short steps
+        // (Richardson of two).
+        std::vector<double> rates;
+        chester->relaxation_rate(origin, state, 1e6 * V, rates);
+        const double h = 1e-6;
+        State        a = state, b = state;
+        chester->relax_state(origin, a, 1e6 * V, h);
+        chester->relax_state(origin, b, 1e6 * V, 0.5 * h);
+        const double T = state.variables[1];
+        const double fd =
+          2 * (b.variables[1] - T) / (0.5 * h) - (a.variables[1] - T) / h;
+        worst_rate =
+          std::max(worst_rate,
+                   std::abs(fd - rates[1]) / std::max(std::abs(rates[1]), 1.) +
+                     std::abs(rates[0]));
       }
   std::printf("   relax_state(): the temperature within 1e-14 of the step's: "
-              "%s; theta left as it was: %s\n",
+              "%s; theta left as it was: %s; relaxation_rate() against "
+              "its short steps within 1e-6 (theta's 0): %s\n",
               worst < 1e-14 ? "yes" : "no",
-              theta_kept ? "yes" : "no");
+              theta_kept ? "yes" : "no",
+              worst_rate < 1e-6 ? "yes" : "no");
 }
