@@ -217,9 +217,8 @@ namespace rupture
       for (unsigned int j = 0; j < n; ++j)
         relative[j] = y[j] - plate_rate * t;
       const unsigned int owned = row_end - row_begin;
-      local.resize((1 + n_variables) * std::size_t(owned));
-      Friction::State     state;
-      std::vector<double> state_rates;
+      shear_load.resize(owned);
+      normal_load.resize(owned);
       for (unsigned int r = 0; r < owned; ++r)
         {
           const unsigned int i   = row_begin + r;
@@ -234,17 +233,41 @@ namespace rupture
               sum[l] += row[j + l] * relative[j + l];
           for (; j < n; ++j)
             sum[0] += row[j] * relative[j];
-          const double tau = tau0[i] + ((sum[0] + sum[1]) + (sum[2] + sum[3]));
+          shear_load[r] = tau0[i] + ((sum[0] + sum[1]) + (sum[2] + sum[3]));
           // (The normal stress changes with the slip where the body
           // couples them, as the shear traction does.)
-          double normal_stress = sigma[i];
+          normal_load[r] = sigma[i];
           if (coupled)
             {
               const double *normal_row = &normal_stiffness[std::size_t(r) * n];
               double        change     = 0;
               for (unsigned int k = 0; k < n; ++k)
                 change += normal_row[k] * relative[k];
-              normal_stress += change;
+              normal_load[r] += change;
+            }
+        }
+      balance(t, y, rate);
+    }
+
+
+
+    void
+    QuasiDynamicFault::balance(const double               t,
+                               const std::vector<double> &y,
+                               std::vector<double>       &rate)
+    {
+      rate.resize(y.size());
+      const unsigned int owned = row_end - row_begin;
+      local.resize((1 + n_variables) * std::size_t(owned));
+      Friction::State     state;
+      std::vector<double> state_rates;
+      for (unsigned int r = 0; r < owned; ++r)
+        {
+          const unsigned int i             = row_begin + r;
+          const double       tau           = shear_load[r];
+          const double       normal_stress = normal_load[r];
+          if (coupled)
+            {
               normal_now[i] = normal_stress;
               // (A fault that would open: rates that are not numbers, so
               // that the integrator rejects the step and tries a smaller
@@ -357,8 +380,10 @@ namespace rupture
                                                 std::log(state.variables[v]) :
                                                 state.variables[v];
         }
+      // (The slip and the time are the step's end, where the pair's last
+      // stage computed the loads: only the balance is solved anew.)
       std::vector<double> rate;
-      rates(t, y, rate);
+      balance(t, y, rate);
       accept(y, rate);
       set_heating();
       // (The new step's held rates, in its first stage.)

@@ -225,6 +225,16 @@ namespace rupture
       const double               eta, plate_rate;
       /// The law's state of every element at the start (its parameters).
       std::vector<Friction::State> states;
+      /// The friction balance of this rank's rows under the loads that
+      /// rates() computed last (shear_load, normal_load): the slip rates and
+      /// state rates of (@p t, @p y) in @p rate. Collective.
+      void
+      balance(const double               t,
+              const std::vector<double> &y,
+              std::vector<double>       &rate);
+      /// This rank's rows' shear traction and normal stress from the slip
+      /// (without the damping), as rates() computed them last.
+      std::vector<double> shear_load, normal_load;
       /// Scratch of rates(): the slips relative to the plate's, and this
       /// rank's rates.
       std::vector<double> relative, local;
