@@ -5,6 +5,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,8 @@ namespace rupture
 {
   namespace BoundaryIntegral
   {
+    struct AntiplaneBody;
+
     /**
      * The fault's stiffness from a finite-element model of the body: the
      * antiplane problem of AntiplaneHalfSpace (a vertical strike-slip fault
@@ -101,8 +104,16 @@ namespace rupture
       std::string
       description() const override;
 
+      /// The meshed body (for the fully dynamic phases).
+      std::shared_ptr<const AntiplaneBody>
+      body() const
+      {
+        return body_;
+      }
+
     private:
-      const Settings settings;
+      const Settings                       settings;
+      std::shared_ptr<const AntiplaneBody> body_;
       /// The number of cells and of unknowns of the mesh.
       unsigned int        n_cells = 0, n_dofs = 0;
       std::vector<double> node_depths, tributary;
