@@ -191,6 +191,40 @@ namespace rupture
                           Patterns::Double(0),
                           "Time (s) between two slip profiles during an "
                           "event (SEAS: 1 s); 0 writes none.");
+        prm.declare_entry(
+          "Events",
+          "quasi-dynamic",
+          Patterns::Selection("quasi-dynamic|fully dynamic"),
+          "How the fast slip is solved. 'quasi-dynamic': radiation damping "
+          "stands in for the waves all along (SEAS BP1-QD). 'fully "
+          "dynamic': when the largest slip rate reaches <Dynamic above> the "
+          "run switches to the waves of the meshed body (central "
+          "differences, friction at the fault's nodes, the far side and "
+          "the bottom absorbing), and back to the quasi-dynamic fault when "
+          "it falls below <Quasi-dynamic below> (SEAS BP1-FD; with "
+          "<Geometry> = antiplane half-space and <Stiffness> = finite "
+          "elements). The slip, the state and the slip rates carry over "
+          "both ways.");
+        prm.declare_entry("Dynamic above",
+                          "1e-3",
+                          Patterns::Double(0),
+                          "With <Events> = fully dynamic: the largest slip "
+                          "rate (m/s) at which a quasi-dynamic phase ends "
+                          "and a fully dynamic one starts.");
+        prm.declare_entry("Quasi-dynamic below",
+                          "5e-4",
+                          Patterns::Double(0),
+                          "With <Events> = fully dynamic: the largest slip "
+                          "rate (m/s) below which a fully dynamic phase "
+                          "ends; less than <Dynamic above>, so that the "
+                          "switch does not chatter.");
+        prm.declare_entry("Courant number",
+                          "0.5",
+                          Patterns::Double(0),
+                          "With <Events> = fully dynamic: the time step of "
+                          "the dynamic phases as a fraction (0 to 1] of the "
+                          "stable step of the central differences on the "
+                          "meshed body.");
       }
       prm.leave_subsection();
     }
@@ -356,7 +390,7 @@ namespace rupture
           first_material_value(prm, "Young's modulus") /
           (2 * (1 + first_material_value(prm, "Poisson's ratio")));
       vertical_shear_modulus = shear_modulus;
-      const double density   = first_material_value(prm, "Density");
+      density                = first_material_value(prm, "Density");
       // (Lame's first constant: only the plane-strain body needs it, which
       // checks it; the antiplane problem does not read it.)
       try
@@ -459,7 +493,35 @@ namespace rupture
                                                 "events");
       sampling.profile_during  = prm.get_double("Profile interval during "
                                                 "events");
+      fully_dynamic            = prm.get("Events") == "fully dynamic";
+      dynamic_above            = prm.get_double("Dynamic above");
+      quasi_dynamic_below      = prm.get_double("Quasi-dynamic below");
+      courant                  = prm.get_double("Courant number");
       prm.leave_subsection();
+      if (fully_dynamic)
+        {
+          AssertThrow(geometry == "antiplane half-space" &&
+                        stiffness == "finite elements",
+                      ExcMessage("<Boundary integral/Events> = fully dynamic "
+                                 "needs the meshed antiplane body: "
+                                 "<Geometry> = antiplane half-space and "
+                                 "<Stiffness> = finite elements."));
+          AssertThrow(quasi_dynamic_below > 0 &&
+                        quasi_dynamic_below < dynamic_above,
+                      ExcMessage("<Boundary integral/Quasi-dynamic below> "
+                                 "is " +
+                                 number(quasi_dynamic_below) +
+                                 " m/s and <Dynamic above> " +
+                                 number(dynamic_above) +
+                                 " m/s, but they must satisfy 0 < <Quasi-"
+                                 "dynamic below> < <Dynamic above>: a "
+                                 "dynamic phase that ended would start "
+                                 "again at once."));
+          AssertThrow(courant > 0 && courant <= 1,
+                      ExcMessage("<Boundary integral/Courant number> is " +
+                                 number(courant) +
+                                 ", but it must lie in (0, 1]."));
+        }
       if (geometry == "antiplane half-space")
         {
           AssertThrow(dip == 90,

@@ -155,6 +155,43 @@ namespace rupture
 
 
 
+    void
+    QuasiDynamicFault::pack_state(const unsigned int     i,
+                                  const Friction::State &state,
+                                  std::vector<double>   &y) const
+    {
+      for (unsigned int v = 0; v < n_variables; ++v)
+        y[(1 + v) * std::size_t(n) + i] =
+          logarithmic[v] ? std::log(state.variables[v]) : state.variables[v];
+    }
+
+
+
+    void
+    QuasiDynamicFault::impose(const std::vector<double> &y,
+                              const std::vector<double> &signed_rates,
+                              const std::vector<double> &tractions)
+    {
+      AssertThrow(y.size() == n * std::size_t(1 + n_variables) &&
+                    signed_rates.size() == n && tractions.size() == n,
+                  ExcInternalError());
+      traction = tractions;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          current[i]         = y[i];
+          velocity[i]        = std::abs(signed_rates[i]);
+          signed_velocity[i] = signed_rates[i];
+          for (unsigned int v = 0; v < n_variables; ++v)
+            {
+              const double value = y[(1 + v) * std::size_t(n) + i];
+              variables[v][i]    = logarithmic[v] ? std::exp(value) : value;
+            }
+        }
+      set_heating();
+    }
+
+
+
     double
     QuasiDynamicFault::solve_rate(const unsigned int     i,
                                   const double           tau,

@@ -4,6 +4,7 @@
 #include <rupture/base/binary_io.h>
 #include <rupture/base/interruption.h>
 #include <rupture/base/on_root.h>
+#include <rupture/boundary_integral/antiplane_dynamics.h>
 #include <rupture/boundary_integral/antiplane_finite_elements.h>
 #include <rupture/boundary_integral/antiplane_half_space.h>
 #include <rupture/boundary_integral/checkpoint.h>
@@ -19,6 +20,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -33,6 +35,12 @@ namespace rupture
     {
 
 
+      /// The fully dynamic phases so far and their steps.
+      struct DynamicCount
+      {
+        std::uint64_t phases = 0, steps = 0;
+      };
+
       /// What contrib/ reads of a run (as the finite-element runs'
       /// summary.json).
       std::string
@@ -42,7 +50,8 @@ namespace rupture
               const TimeIntegration::DormandPrince &integrator,
               const double                          wall,
               const double                          body_wall,
-              const unsigned int                    ranks)
+              const unsigned int                    ranks,
+              const DynamicCount                   *dynamic)
       {
         const bool         finished = clock.t >= settings.end_time;
         std::ostringstream json;
@@ -56,8 +65,11 @@ namespace rupture
              << "  \"elements\": " << body.size() << ",\n"
              << "  \"steps\": " << clock.steps << ",\n"
              << "  \"rejected steps\": " << integrator.rejected_steps() << ",\n"
-             << "  \"events\": " << clock.n_events << ",\n"
-             << "  \"time\": " << clock.t << ",\n"
+             << "  \"events\": " << clock.n_events << ",\n";
+        if (dynamic)
+          json << "  \"dynamic phases\": " << dynamic->phases << ",\n"
+               << "  \"dynamic steps\": " << dynamic->steps << ",\n";
+        json << "  \"time\": " << clock.t << ",\n"
              << "  \"smallest time step\": " << clock.dt_min << ",\n"
              << "  \"largest time step\": " << clock.dt_max << ",\n"
              << "  \"wall time\": " << (settings.test_mode ? 0. : wall) << ",\n"
@@ -158,8 +170,24 @@ namespace rupture
             std::vector<double>       &r) { fault.rates(t, v, r); },
         tolerance);
 
+      // The fully dynamic phases' body (<Events> = fully dynamic).
+      std::unique_ptr<AntiplaneDynamics> dynamics;
+      if (settings.fully_dynamic)
+        {
+          const auto *meshed =
+            dynamic_cast<const AntiplaneFiniteElements *>(body.get());
+          AssertThrow(meshed != nullptr, ExcInternalError());
+          dynamics = std::make_unique<AntiplaneDynamics>(meshed->body(),
+                                                         fault,
+                                                         *settings.law,
+                                                         settings.density,
+                                                         settings.plate_rate,
+                                                         settings.courant);
+        }
+
       // The state of the loop, all of it in a checkpoint.
       std::vector<double> y = fault.initial_values();
+      DynamicCount        dynamic;
       Clock               clock;
       clock.dt = settings.first_step;
       Checkpoint checkpoint(settings.output_directory, communicator);
@@ -171,6 +199,11 @@ namespace rupture
           fault.load(in);
           events.load(in);
           output.load(in);
+          if (dynamics)
+            {
+              BinaryIO::read(in, dynamic.phases);
+              BinaryIO::read(in, dynamic.steps);
+            }
           AssertThrow(in.good() && y.size() == fault.initial_values().size(),
                       ExcMessage("--resume: the checkpoint <" +
                                  checkpoint.path() + "> is damaged."));
@@ -242,9 +275,9 @@ namespace rupture
       // run continues from.)
       unsigned long checkpoint_step =
         resume ? clock.steps : std::numeric_limits<unsigned long>::max();
-      const auto write_checkpoint = [&]() {
-        if (checkpoint_step == clock.steps)
-          return; // (This step's is written.)
+      // (The bytes of a checkpoint of the loop's state now; the output's
+      // part on rank 0 only.)
+      const auto checkpoint_bytes = [&]() {
         std::ostringstream out;
         Checkpoint::write_clock(out, clock, geometry.size());
         BinaryIO::write(out, y);
@@ -253,14 +286,121 @@ namespace rupture
         events.save(out);
         Utilities::on_root(communicator, [&]() {
           output.save(out);
-          Checkpoint::store(directory, out.str());
+          if (dynamics)
+            {
+              BinaryIO::write(out, dynamic.phases);
+              BinaryIO::write(out, dynamic.steps);
+            }
         });
+        return out.str();
+      };
+      const auto write_checkpoint = [&]() {
+        if (checkpoint_step == clock.steps)
+          return; // (This step's is written.)
+        const std::string bytes = checkpoint_bytes();
+        Utilities::on_root(communicator,
+                           [&]() { Checkpoint::store(directory, bytes); });
         checkpoint_step = clock.steps;
         last_checkpoint = std::chrono::steady_clock::now();
       };
 
       const double end_time = settings.end_time;
-      double       next_report =
+
+      // A fully dynamic phase from the state of the step just taken until
+      // the largest slip rate falls below <Quasi-dynamic below>; then the
+      // quasi-dynamic fault goes on from its slip and state. A checkpoint
+      // falls due only between the phases: a run stopped by a signal
+      // during one keeps the checkpoint of the phase's start, from which
+      // --resume takes the same steps again.
+      const auto run_dynamic_phase = [&]() {
+        const std::string at_start =
+          settings.checkpoints() ? checkpoint_bytes() : std::string();
+        const unsigned long steps_at_start = clock.steps;
+        ++dynamic.phases;
+        if (root)
+          std::cout << "  fully dynamic from t = " << std::setprecision(8)
+                    << clock.t / year << " years (max slip rate "
+                    << std::setprecision(4) << fault.max_slip_rate()
+                    << " m/s), steps of " << dynamics->time_step() << " s\n"
+                    << std::flush;
+        dynamics->start(clock.t, y);
+        // (The first step balances friction at the phase's start, which
+        // the quasi-dynamic step recorded.)
+        dynamics->step();
+        while (true)
+          {
+            dynamics->step();
+            ++clock.steps;
+            ++dynamic.steps;
+            const double tk = dynamics->time();
+            fault.impose(dynamics->unknowns(),
+                         dynamics->slip_rates(),
+                         dynamics->tractions());
+            const bool last =
+              fault.max_slip_rate() < settings.quasi_dynamic_below ||
+              tk >= end_time;
+            const bool ended = events.record(fault, tk);
+            output.record(tk,
+                          clock.steps,
+                          dynamics->time_step(),
+                          integrator.rejected_steps(),
+                          fault,
+                          tk >= end_time);
+            if (ended)
+              {
+                ++clock.n_events;
+                Utilities::on_root(communicator,
+                                   [&]() { events.write(fault, directory); });
+                if (root)
+                  std::cout << "  event " << clock.n_events
+                            << " ended at t = " << std::setprecision(6)
+                            << tk / year << " years\n"
+                            << std::flush;
+              }
+            const int signal =
+              dealii::Utilities::MPI::max(Interruption::requested(),
+                                          communicator);
+            if (signal != 0)
+              {
+                Utilities::on_root(communicator,
+                                   [&]() { events.write(fault, directory); });
+                if (!at_start.empty())
+                  Utilities::on_root(communicator, [&]() {
+                    Checkpoint::store(directory, at_start);
+                  });
+                throw Interruption::Stopped(
+                  signal,
+                  "Stopped by " + Interruption::signal_name(signal) +
+                    " at t = " + number(tk) +
+                    " s, in the fully dynamic phase that started at step " +
+                    std::to_string(steps_at_start) +
+                    "; the files written so far hold the run up to there" +
+                    (settings.checkpoints() ?
+                       ", and --resume continues it from that phase's "
+                       "start." :
+                       "."));
+              }
+            if (last)
+              break;
+          }
+        // Back to the quasi-dynamic fault: its slip rates from its balance
+        // at the dynamic phase's slip and state.
+        clock.t = dynamics->time();
+        y       = dynamics->unknowns();
+        fault.evaluate(clock.t, y);
+        std::vector<double> rate;
+        fault.rates(clock.t, y, rate);
+        integrator.restart(rate);
+        clock.dt      = 10 * dynamics->time_step();
+        clock.last_dt = dynamics->time_step();
+        clock.dt_min  = std::min(clock.dt_min, clock.last_dt);
+        if (root)
+          std::cout << "  quasi-dynamic from t = " << std::setprecision(8)
+                    << clock.t / year << " years after "
+                    << clock.steps - steps_at_start << " dynamic steps\n"
+                    << std::flush;
+      };
+      double next_report =
         (std::floor(10 * clock.t / end_time) + 1) * 0.1 * end_time;
       double &t = clock.t;
       while (t < end_time)
@@ -301,6 +441,9 @@ namespace rupture
                           << t / year << " years\n"
                           << std::flush;
             }
+          if (dynamics && t < end_time &&
+              fault.max_slip_rate() >= settings.dynamic_above)
+            run_dynamic_phase();
           if (root && t >= next_report && t < end_time)
             {
               std::cout << "  t = " << std::setprecision(6) << t / year
@@ -382,7 +525,8 @@ namespace rupture
                                   wall,
                                   body_wall,
                                   dealii::Utilities::MPI::n_mpi_processes(
-                                    communicator)));
+                                    communicator),
+                                  dynamics ? &dynamic : nullptr));
         }
     }
   } // namespace BoundaryIntegral

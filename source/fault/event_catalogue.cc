@@ -36,6 +36,16 @@ namespace rupture
                         "The slip rate (m/s, > 0) above which the fault is "
                         "in an event, 1 mm/s as in the SCEC SEAS "
                         "benchmarks.");
+      prm.declare_entry(
+        "Event end slip rate",
+        "0",
+        Patterns::Double(0),
+        "The slip rate (m/s) below which an event ends: 0 for <Event slip "
+        "rate> itself (the SEAS definition); less than it, an event ends "
+        "only when the largest slip rate has fallen below this, so that "
+        "waves or afterslip that hover about <Event slip rate> after an "
+        "event do not count as events of their own (fully dynamic cycles, "
+        "<Boundary integral/Events>).");
     }
 
 
@@ -50,6 +60,15 @@ namespace rupture
                   ExcMessage("<Fault/Output/Event slip rate> is " +
                              prm.get("Event slip rate") +
                              ", but it must be > 0 (m/s)."));
+      end_threshold = prm.get_double("Event end slip rate");
+      AssertThrow(std::isfinite(end_threshold) && end_threshold <= threshold,
+                  ExcMessage("<Fault/Output/Event end slip rate> is " +
+                             prm.get("Event end slip rate") +
+                             ", but it must lie between 0 (the same as "
+                             "<Event slip rate>) and <Event slip rate> = " +
+                             prm.get("Event slip rate") + " m/s."));
+      if (end_threshold == 0)
+        end_threshold = threshold;
     }
 
 
@@ -74,7 +93,7 @@ namespace rupture
           return false;
         }
       fault.track_event();
-      if (rate >= threshold)
+      if (rate >= end_threshold)
         return false;
       rows.push_back(row(fault.event_summary(threshold), time, true));
       open = false;
@@ -123,7 +142,10 @@ namespace rupture
       std::ostringstream out;
       out << "# Earthquakes of the run: intervals in which the largest "
              "frictional slip rate is at least "
-          << threshold << " m/s. Times since the start of the phase.\n";
+          << threshold << " m/s";
+      if (end_threshold != threshold)
+        out << " (ending when it falls below " << end_threshold << " m/s)";
+      out << ". Times since the start of the phase.\n";
       out << "event,start (s),start (years),end (s),duration (s),"
           << (dim == 2 ? "hypocentre x (m),hypocentre y (m)," :
                          "hypocentre x (m),hypocentre y (m),hypocentre z (m),")

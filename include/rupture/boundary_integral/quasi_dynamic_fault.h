@@ -119,6 +119,47 @@ namespace rupture
       std::vector<double>
       relax(const double t, std::vector<double> &y, const double dt);
 
+      /**
+       * Take the fault's state from elsewhere (a fully dynamic phase,
+       * AntiplaneDynamics): the slips and states @p y (as the integrator's
+       * unknowns), the slip rates with their signs @p signed_rates and the
+       * shear tractions @p tractions (Pa) per element: what the outputs
+       * and the event catalogue then read, and the first guesses of the
+       * next slip-rate solves.
+       */
+      void
+      impose(const std::vector<double> &y,
+             const std::vector<double> &signed_rates,
+             const std::vector<double> &tractions);
+
+      /// The law's position of element @p i, its initial shear traction
+      /// tau0_i (Pa) and its normal stress before any slip (Pa).
+      const Point<3> &
+      point(const unsigned int i) const
+      {
+        return points[i];
+      }
+      double
+      initial_shear(const unsigned int i) const
+      {
+        return tau0[i];
+      }
+      double
+      initial_normal_stress(const unsigned int i) const
+      {
+        return sigma[i];
+      }
+      /// The law's state of element @p i in @p y (the integrator's
+      /// unknowns), and back.
+      void
+      unpack_state(const unsigned int         i,
+                   const std::vector<double> &y,
+                   Friction::State           &state) const;
+      void
+      pack_state(const unsigned int     i,
+                 const Friction::State &state,
+                 std::vector<double>   &y) const;
+
       unsigned int
       size() const
       {
@@ -208,11 +249,6 @@ namespace rupture
                  const double           tau,
                  const double           normal_stress,
                  const Friction::State &state) const;
-      /// Fill the state of element @p i from y.
-      void
-      unpack_state(const unsigned int         i,
-                   const std::vector<double> &y,
-                   Friction::State           &state) const;
 
       const Stiffness           &geometry;
       const Friction::Interface &law;

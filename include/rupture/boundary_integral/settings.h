@@ -58,6 +58,8 @@ namespace rupture
       double vertical_shear_modulus = 0;
       /// Lame's first constant (Pa), for the plane-strain body.
       double lambda = 0;
+      /// The density (kg/m^3), for the fully dynamic phases.
+      double density = 0;
       /// Whether the first material is anisotropic.
       bool                                          anisotropic       = false;
       double                                        radiation_damping = 0;
@@ -80,6 +82,11 @@ namespace rupture
       std::string           normal_stress, initial_shear_stress;
       double                absolute_tolerance = 0;
       CycleOutput::Sampling sampling;
+      /// <Events> = fully dynamic, its thresholds (m/s) and Courant number.
+      bool   fully_dynamic       = false;
+      double dynamic_above       = 1e-3;
+      double quasi_dynamic_below = 5e-4;
+      double courant             = 0.5;
 
       // The clock and the end.
       double                                   end_time   = 0;

@@ -87,6 +87,8 @@ namespace rupture
 
       bool   is_enabled = false;
       double threshold  = 1e-3;
+      /// <Event end slip rate> (the threshold where it is 0).
+      double end_threshold = 1e-3;
       /// The open event: its start time and hypocentre.
       bool                             open  = false;
       double                           start = 0;
