@@ -405,6 +405,10 @@ namespace rupture
       double &t = clock.t;
       while (t < end_time)
         {
+          // (A checkpoint falls due where the step count passes a
+          // multiple of <Checkpoint/Interval>, also in the many steps of
+          // a fully dynamic phase.)
+          const unsigned long steps_before = clock.steps;
           try
             {
               clock.last_dt = integrator.advance(t, y, clock.dt, end_time);
@@ -474,7 +478,8 @@ namespace rupture
             int(Interruption::take_checkpoint_request()), communicator);
           if (requested || (settings.checkpoints() &&
                             ((settings.checkpoint_steps > 0 &&
-                              clock.steps % settings.checkpoint_steps == 0) ||
+                              clock.steps / settings.checkpoint_steps !=
+                                steps_before / settings.checkpoint_steps) ||
                              minutes_passed)))
             write_checkpoint();
           // (Together: a signal that reached one rank stops all.)
