@@ -425,6 +425,8 @@ main(int argc, char **argv)
   check("an event catalogue with mesh refinement", refined);
   check("an event slip rate of 0",
         with_fault("Fault/Output/Event slip rate=0"));
+  check("an event end slip rate above the event slip rate",
+        with_fault("Fault/Output/Event end slip rate=2e-3"));
   check("a number of events without an event catalogue",
         with_fault("Termination/Number of events=3"));
   // The boundary-integral method's one-element slider with one more
@@ -474,6 +476,21 @@ main(int argc, char **argv)
         finite_elements("Boundary integral/Domain size=700"));
   check("the finite-element stiffness with cells growing by 3",
         finite_elements("Boundary integral/Cell growth factor=3"));
+  check("fully dynamic events with the Green's function",
+        boundary_integral("Boundary integral/Events=fully dynamic"));
+  {
+    auto arguments = finite_elements("Boundary integral/Events=fully dynamic");
+    arguments.insert(arguments.end(),
+                     {"--set", "Boundary integral/Quasi-dynamic below=1e-3"});
+    check("fully dynamic events whose phases would end where they start",
+          arguments);
+  }
+  {
+    auto arguments = finite_elements("Boundary integral/Events=fully dynamic");
+    arguments.insert(arguments.end(),
+                     {"--set", "Boundary integral/Courant number=1.5"});
+    check("fully dynamic events with a Courant number of 1.5", arguments);
+  }
   // A dipping fault in a plane-strain body (SEAS BP3) with one more
   // setting, its nodes 10 km apart.
   const auto plane_strain = [](const std::string &setting) {
