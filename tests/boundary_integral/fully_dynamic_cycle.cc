@@ -10,6 +10,10 @@
 // - with inertia the events are faster and larger than with radiation
 //   damping (peak slip rate and largest slip above the quasi-dynamic
 //   run's), and the second event comes later (more slip to recover);
+// - no jump where a dynamic phase starts: at the stations 0 and 5 km down
+//   the slip rate changes by less than 1 % and the shear stress by less
+//   than 1e-3 over the first dynamic step (it starts from the static
+//   fields of the slip and of the slip rates);
 // - a checkpoint every 4000 steps (they fall due in the dynamic phases
 //   and are written after them), the run killed after the one before the
 //   last and continued: every file the same, byte for byte.
@@ -66,6 +70,44 @@ main(int argc, char **argv)
                   qd[1][2] - qd[0][2],
                   fd[1][2] - fd[0][2] > qd[1][2] - qd[0][2] ? "yes" : "no");
     }
+
+  // The switch to the first dynamic phase: the statistics' last row of the
+  // quasi-dynamic phase and the first of the dynamic one (the time step
+  // drops to the dynamic phase's), and the stations' rows at those times.
+  {
+    const auto   rows = tests::read_statistics("fd/statistics.dat");
+    unsigned int k    = 1;
+    while (k < rows.size() && !(rows[k][2] < 1 && rows[k - 1][2] > 1))
+      ++k;
+    if (k < rows.size())
+      for (const std::string station : {"dp000", "dp050"})
+        {
+          // Columns: time, slip, log10 slip rate, shear stress (MPa),
+          // log10 state.
+          const auto series = tests::read_statistics("fd/" + station + ".dat");
+          std::vector<double> before, after;
+          for (const auto &r : series)
+            {
+              if (r[0] == rows[k - 1][1])
+                before = r;
+              if (r[0] == rows[k][1])
+                after = r;
+            }
+          if (before.empty() || after.empty())
+            std::printf("%s: the rows of the switch are missing\n",
+                        station.c_str());
+          else
+            std::printf(
+              "%s at the switch to the dynamic phase (one step "
+              "of %.3g s): slip rate within 1 %%: %s, shear stress "
+              "within 1e-3: %s\n",
+              station.c_str(),
+              rows[k][2],
+              std::abs(std::pow(10, after[2] - before[2]) - 1) < 1e-2 ? "yes" :
+                                                                        "no",
+              std::abs(after[3] / before[3] - 1) < 1e-3 ? "yes" : "no");
+        }
+  }
 
   // Checkpoints and a continued run.
   const std::vector<std::string> stopped = {"Checkpoint/Interval=4000"};
