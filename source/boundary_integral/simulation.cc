@@ -403,7 +403,26 @@ namespace rupture
       double next_report =
         (std::floor(10 * clock.t / end_time) + 1) * 0.1 * end_time;
       double &t = clock.t;
-      while (t < end_time)
+      // (A checkpoint whose largest slip rate is above the switch's is the
+      // start of a dynamic phase that a signal interrupted: it comes
+      // first.)
+      bool ended_early = false;
+      if (resume && dynamics && t < end_time &&
+          fault.max_slip_rate() >= settings.dynamic_above)
+        {
+          run_dynamic_phase();
+          // (As the step that started it would have ended the run.)
+          ended_early =
+            settings.max_events > 0 && clock.n_events >= settings.max_events;
+          if (ended_early)
+            output.record(t,
+                          clock.steps,
+                          clock.last_dt,
+                          integrator.rejected_steps(),
+                          fault,
+                          true);
+        }
+      while (!ended_early && t < end_time)
         {
           // (A checkpoint falls due where the step count passes a
           // multiple of <Checkpoint/Interval>, also in the many steps of

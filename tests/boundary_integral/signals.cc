@@ -41,7 +41,10 @@ main(int argc, char **argv)
 
   const std::string checkpoint = "signalled/checkpoint/boundary_integral.bin";
   bool              usr1_while_running = false, checkpoint_written = false;
-  std::thread       signaller([&]() {
+  // (Before the signaller looks for files: an earlier run's would mislead
+  // it.)
+  fs::remove_all("signalled");
+  std::thread              signaller([&]() {
     const auto wait_for = [](const std::string &file) {
       for (unsigned int i = 0; i < 60000 && !fs::exists(file); ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -55,14 +58,13 @@ main(int argc, char **argv)
     checkpoint_written = wait_for(checkpoint);
     ::kill(::getpid(), SIGTERM);
   });
-  std::string       errors;
+  std::string              errors;
   std::vector<std::string> arguments = {prm,
                                         "--set",
                                         "Output directory=signalled",
                                         "--set",
                                         "Time integration/End time=2.9e10"};
-  fs::remove_all("signalled");
-  const int code = tests::run_capture(arguments, errors);
+  const int                code      = tests::run_capture(arguments, errors);
   signaller.join();
   std::printf("SIGUSR1 while the run steps: %s; it wrote a checkpoint and "
               "went on: %s\n",
