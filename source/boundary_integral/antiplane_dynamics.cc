@@ -25,7 +25,8 @@ namespace rupture
       const Friction::Interface           &law,
       const double                         density,
       const double                         plate_rate,
-      const double                         courant)
+      const double                         courant,
+      const double                         damping)
       : body(std::move(body_))
       , fault(fault)
       , law(law)
@@ -134,7 +135,8 @@ namespace rupture
           x /= top;
         }
       AssertThrow(std::isfinite(lambda) && lambda > 0, ExcInternalError());
-      dt = courant * 2 / std::sqrt(1.1 * lambda);
+      dt        = courant * 2 / std::sqrt(1.1 * lambda);
+      viscosity = damping * dt;
 
       u.reinit(n_dofs);
       v.reinit(n_dofs);
@@ -235,7 +237,16 @@ namespace rupture
     {
       const unsigned int            N      = fault.size();
       const types::global_dof_index n_dofs = u.size();
-      body->A.vmult(force, u);
+      // (Kelvin-Voigt damping: the stress of the displacement and of the
+      // velocity times the damping time.)
+      if (viscosity > 0)
+        {
+          scratch = u;
+          scratch.add(viscosity, v);
+          body->A.vmult(force, scratch);
+        }
+      else
+        body->A.vmult(force, u);
       // The bulk and the absorbing sides.
       for (types::global_dof_index i = 0; i < n_dofs; ++i)
         if (fixed[i])

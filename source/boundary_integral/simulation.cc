@@ -182,7 +182,8 @@ namespace rupture
                                                          *settings.law,
                                                          settings.density,
                                                          settings.plate_rate,
-                                                         settings.courant);
+                                                         settings.courant,
+                                                         settings.kelvin_voigt);
         }
 
       // The state of the loop, all of it in a checkpoint.

@@ -84,7 +84,8 @@ main(int argc, char **argv)
 
       // 1. At rest.
       {
-        AntiplaneDynamics dynamics(body.body(), at_rest, *law, rho, Vp, 0.5);
+        AntiplaneDynamics dynamics(
+          body.body(), at_rest, *law, rho, Vp, 0.5, 0.1);
         dynamics.start(0, y);
         double worst = 0;
         for (unsigned int k = 0; k < 100; ++k)
@@ -128,7 +129,7 @@ main(int argc, char **argv)
                                                                          "no");
       // From rest: the slip rates of the steady state.
       fault.impose(y, std::vector<double>(n, Vp), rest);
-      AntiplaneDynamics dynamics(body.body(), fault, *law, rho, Vp, 0.5);
+      AntiplaneDynamics dynamics(body.body(), fault, *law, rho, Vp, 0.5, 0.1);
       dynamics.start(0, y);
       double       middle_sum = 0, surface_sum = 0;
       unsigned int count = 0;

@@ -14,7 +14,7 @@
 //   the slip rate changes by less than 1 % and the shear stress by less
 //   than 1e-3 over the first dynamic step (it starts from the static
 //   fields of the slip and of the slip rates);
-// - a checkpoint every 4000 steps (they fall due in the dynamic phases
+// - a checkpoint every 5000 steps (they fall due in the dynamic phases
 //   and are written after them), the run killed after the one before the
 //   last and continued: every file the same, byte for byte.
 
@@ -110,7 +110,7 @@ main(int argc, char **argv)
   }
 
   // Checkpoints and a continued run.
-  const std::vector<std::string> stopped = {"Checkpoint/Interval=4000"};
+  const std::vector<std::string> stopped = {"Checkpoint/Interval=5000"};
   std::printf("with checkpoints: exit code %d\n",
               tests::run_in("stopped", {prm}, stopped));
   std::printf("continued (its screen output):\n");

@@ -491,6 +491,13 @@ main(int argc, char **argv)
                      {"--set", "Boundary integral/Courant number=1.5"});
     check("fully dynamic events with a Courant number of 1.5", arguments);
   }
+  {
+    auto arguments = finite_elements("Boundary integral/Events=fully dynamic");
+    arguments.insert(arguments.end(),
+                     {"--set", "Boundary integral/Kelvin-Voigt damping=2"});
+    check("fully dynamic events with a Kelvin-Voigt damping of 2 steps",
+          arguments);
+  }
   // A dipping fault in a plane-strain body (SEAS BP3) with one more
   // setting, its nodes 10 km apart.
   const auto plane_strain = [](const std::string &setting) {

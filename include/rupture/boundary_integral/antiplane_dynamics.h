@@ -53,14 +53,19 @@ namespace rupture
        * body's fault nodes) with the friction law @p law, the density
        * @p density (kg/m^3), the plate rate @p plate_rate (m/s) and the
        * Courant number @p courant (the step is that times the stable step
-       * 2 / sqrt(largest eigenvalue of M^-1 A), found by power iteration).
+       * 2 / sqrt(largest eigenvalue of M^-1 A), found by power iteration)
+       * and Kelvin-Voigt damping of @p damping time steps (the stress of
+       * u + damping dt v: it damps the mesh's highest frequencies, which a
+       * sudden slip excites and which would ring on at the fault; Day et
+       * al. 2005 take 0.1).
        */
       AntiplaneDynamics(std::shared_ptr<const AntiplaneBody> body,
                         const QuasiDynamicFault             &fault,
                         const Friction::Interface           &law,
                         const double                         density,
                         const double                         plate_rate,
-                        const double                         courant);
+                        const double                         courant,
+                        const double                         damping);
 
       double
       time_step() const
@@ -129,7 +134,9 @@ namespace rupture
       const QuasiDynamicFault             &fault;
       const Friction::Interface           &law;
       const double                         plate_rate;
-      double                               dt = 0;
+      /// The time step and the Kelvin-Voigt damping time (s).
+      double                 dt = 0, viscosity = 0;
+      dealii::Vector<double> scratch;
       /// Lumped masses, the dashpots of the absorbing sides, whether an
       /// unknown is held (the fault below W), the fault's node of each
       /// unknown (or invalid).

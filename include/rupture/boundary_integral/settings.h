@@ -82,11 +82,13 @@ namespace rupture
       std::string           normal_stress, initial_shear_stress;
       double                absolute_tolerance = 0;
       CycleOutput::Sampling sampling;
-      /// <Events> = fully dynamic, its thresholds (m/s) and Courant number.
+      /// <Events> = fully dynamic, its thresholds (m/s), Courant number and
+      /// Kelvin-Voigt damping (time steps).
       bool   fully_dynamic       = false;
       double dynamic_above       = 1e-3;
       double quasi_dynamic_below = 5e-4;
       double courant             = 0.5;
+      double kelvin_voigt        = 0.1;
 
       // The clock and the end.
       double                                   end_time   = 0;
