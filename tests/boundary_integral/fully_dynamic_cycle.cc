@@ -16,7 +16,8 @@
 //   fields of the slip and of the slip rates);
 // - a checkpoint every 5000 steps (they fall due in the dynamic phases
 //   and are written after them), the run killed after the one before the
-//   last and continued: every file the same, byte for byte.
+//   last and continued: every file the same, byte for byte;
+// - prm/seas/bp1-fd.prm runs (coarse and short).
 
 #include <deal.II/base/mpi.h>
 
@@ -128,5 +129,17 @@ main(int argc, char **argv)
                     tests::read_file("stopped/" + file) ?
                   "yes" :
                   "no");
+
+  // The shipped BP1-FD set-up reads and runs (coarse and short).
+  std::printf("prm/seas/bp1-fd.prm, nodes 2 km apart, 10 years: exit code "
+              "%d\n",
+              tests::run_in("shipped",
+                            {std::string(SOURCE_DIR) +
+                             "/../../prm/seas/bp1-fd.prm"},
+                            {"Boundary integral/Element size=2000",
+                             "Boundary integral/Domain size=100e3",
+                             "Boundary integral/Cell growth factor=1.5",
+                             "Time integration/End time=3.15576e8",
+                             "Test mode=true"}));
   return 0;
 }
