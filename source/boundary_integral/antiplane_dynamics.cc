@@ -39,6 +39,14 @@ namespace rupture
       AssertThrow(std::isfinite(courant) && courant > 0 && courant <= 1,
                   ExcMessage("<Boundary integral/Courant number> is " +
                              number(courant) + ", but it must lie in (0, 1]."));
+      AssertThrow(std::isfinite(damping) && damping >= 0 && damping <= 1 &&
+                    courant * std::sqrt(1 + 2 * damping) <= 1,
+                  ExcMessage("<Boundary integral/Kelvin-Voigt damping> is " +
+                             number(damping) + " with the Courant number " +
+                             number(courant) +
+                             ": it must lie in [0, 1] (time steps), and the "
+                             "Courant number times sqrt(1 + 2 damping) be at "
+                             "most 1 (stability)."));
       const types::global_dof_index n_dofs = body->dofs.n_dofs();
       const unsigned int            N      = body->fault_dof.size();
       AssertThrow(N == fault.size(), ExcInternalError());
@@ -189,45 +197,47 @@ namespace rupture
 
     double
     AntiplaneDynamics::solve_rate(const unsigned int     i,
-                                  const double           stick,
-                                  const double           before,
+                                  const double           target,
+                                  const double           guess,
                                   const Friction::State &state) const
     {
       const unsigned int dof = body->fault_dof[i];
       const double       Z   = mass[dof] / (2 * body->tributary[i] * dt);
       const double       p   = fault.initial_normal_stress(i);
       const Point<3>    &x   = fault.point(i);
-      // g(W) = T - Z W - S((V_- + W) / 2) falls with W.
-      const auto g = [&](const double W, double &dg) {
-        const double V  = 0.5 * (before + W);
+      // h(m) = |T'| - 2 Z m - S(m) falls with the mean rate's size m.
+      const auto h = [&](const double m, double &dh) {
         double       dS = 0, dp = 0;
-        const double S =
-          law.strength_at_rate(x, state, std::max(V, 0.), p, dS, dp);
-        dg = -Z - (V > 0 ? 0.5 * dS : 0.);
-        return stick - Z * W - S;
+        const double S = law.strength_at_rate(x, state, m, p, dS, dp);
+        dh             = -2 * Z - dS;
+        return target - 2 * Z * m - S;
       };
-      double dg = 0;
-      if (g(0., dg) <= 0)
+      double dh = 0;
+      if (target == 0 || h(0., dh) <= 0)
         return 0;
-      double lo = 0, hi = stick / Z;
-      double W = std::clamp(std::abs(before), 1e-3 * hi, hi);
+      // (|T'| / 2Z brackets the root where the strength is not negative
+      // there; the logarithmic law's can be: then the bracket grows.)
+      double lo = 0, hi = target / (2 * Z);
+      for (unsigned int k = 0; k < 400 && h(hi, dh) > 0; ++k)
+        hi *= 2;
+      double m = std::clamp(guess, 1e-3 * hi, hi);
       for (unsigned int iteration = 0; iteration < 200; ++iteration)
         {
-          const double r = g(W, dg);
+          const double r = h(m, dh);
           if (r > 0)
-            lo = W;
+            lo = m;
           else
-            hi = W;
+            hi = m;
           if (r == 0 || hi - lo <= 1e-14 * hi)
-            return W;
-          double next = W - r / dg;
+            return m;
+          double next = m - r / dh;
           if (!(next > lo && next < hi) || !std::isfinite(next))
             next = 0.5 * (lo + hi);
-          if (std::abs(next - W) <= 1e-14 * std::max(W, 1e-300))
+          if (std::abs(next - m) <= 1e-14 * std::max(m, 1e-300))
             return next;
-          W = next;
+          m = next;
         }
-      return W;
+      return m;
     }
 
 
@@ -264,17 +274,24 @@ namespace rupture
           const types::global_dof_index dof = body->fault_dof[i];
           const double Z      = mass[dof] / (2 * body->tributary[i] * dt);
           const double before = 2 * v[dof] + plate_rate;
-          const double stick  = fault.initial_shear(i) -
-                               force[dof] / body->tributary[i] + Z * before;
-          const double sense = stick < 0 ? -1. : 1.;
-          const double W =
-            sense * solve_rate(i, std::abs(stick), sense * before, states[i]);
-          traction[i] = stick - Z * W;
-          rate[i]     = 0.5 * (before + W);
-          recorded[i] = plate_rate * t + 2 * u[dof];
+          // The traction at t_k is T' - 2 Z V_k with the mean rate
+          // V_k = (V_- + W) / 2 and T' = tau + 2 Z V_-; friction holds at
+          // V_k, of T''s sense: |T'| - 2 Z |V_k| = S(|V_k|). Any sense of W
+          // (a node that stops or turns), V_k = 0 where S(0) holds T'.
+          const double loaded = fault.initial_shear(i) -
+                                force[dof] / body->tributary[i] +
+                                2 * Z * before;
+          const double sense = loaded < 0 ? -1. : 1.;
+          const double mean =
+            sense *
+            solve_rate(i, std::abs(loaded), std::abs(before), states[i]);
+          const double W = 2 * mean - before;
+          traction[i]    = loaded - 2 * Z * mean;
+          rate[i]        = mean;
+          recorded[i]    = plate_rate * t + 2 * u[dof];
           fault.pack_state(i, states[i], recorded);
           v[dof] = 0.5 * (W - plate_rate);
-          // The state over the next half step.
+          // The state over the step to t_k+1 at the rate W.
           Friction::State next;
           law.update_state(fault.point(i),
                            states[i],
@@ -301,14 +318,5 @@ namespace rupture
 
 
 
-    double
-    AntiplaneDynamics::kinetic_energy() const
-    {
-      // (Both sides: twice one side's.)
-      double energy = 0;
-      for (types::global_dof_index i = 0; i < v.size(); ++i)
-        energy += mass[i] * v[i] * v[i];
-      return energy;
-    }
   } // namespace BoundaryIntegral
 } // namespace rupture

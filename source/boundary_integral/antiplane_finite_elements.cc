@@ -72,6 +72,8 @@ namespace rupture
         for (std::size_t c = 0; c < part.size() / N; ++c, ++j)
           for (unsigned int i = 0; i < N; ++i)
             matrix[std::size_t(i) * N + j] = part[c * N + i];
+      if (!settings.keep_body)
+        body_.reset();
     }
 
 

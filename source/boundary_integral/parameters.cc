@@ -222,9 +222,10 @@ namespace rupture
                           "0.5",
                           Patterns::Double(0),
                           "With <Events> = fully dynamic: the time step of "
-                          "the dynamic phases as a fraction (0 to 1] of the "
-                          "stable step of the central differences on the "
-                          "meshed body.");
+                          "the dynamic phases as a fraction of the stable "
+                          "step of the central differences on the meshed "
+                          "body without damping; times sqrt(1 + 2 <Kelvin-"
+                          "Voigt damping>) at most 1.");
         prm.declare_entry(
           "Kelvin-Voigt damping",
           "0.1",
@@ -537,6 +538,15 @@ namespace rupture
                                  "is " +
                                  number(kelvin_voigt) +
                                  ", but it must lie in [0, 1] (time steps)."));
+          AssertThrow(courant * std::sqrt(1 + 2 * kelvin_voigt) <= 1,
+                      ExcMessage("<Boundary integral/Courant number> = " +
+                                 number(courant) +
+                                 " with <Kelvin-Voigt damping> = " +
+                                 number(kelvin_voigt) +
+                                 " is unstable: the damping shortens the "
+                                 "stable step by sqrt(1 + 2 damping), so the "
+                                 "Courant number times that must be at most "
+                                 "1."));
         }
       if (geometry == "antiplane half-space")
         {

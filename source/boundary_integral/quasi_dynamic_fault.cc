@@ -579,8 +579,11 @@ namespace rupture
       event_peak  = fields[4];
       if (coupled)
         normal_now = fields[5];
-      signed_velocity = velocity;
-      variables       = state;
+      // (The sense of each slip rate is the traction's, which the balance
+      // gives V.)
+      for (unsigned int i = 0; i < n; ++i)
+        signed_velocity[i] = std::copysign(velocity[i], traction[i]);
+      variables = state;
       set_heating();
     }
 

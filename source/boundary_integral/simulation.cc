@@ -110,6 +110,7 @@ namespace rupture
             fe.growth                 = settings.cell_growth;
             fe.shear_modulus          = settings.shear_modulus;
             fe.vertical_shear_modulus = settings.vertical_shear_modulus;
+            fe.keep_body              = settings.fully_dynamic;
             return std::make_unique<AntiplaneFiniteElements>(fe, communicator);
           }
         // (An anisotropic body with C45 = 0 is the isotropic one of modulus
@@ -200,11 +201,8 @@ namespace rupture
           fault.load(in);
           events.load(in);
           output.load(in);
-          if (dynamics)
-            {
-              BinaryIO::read(in, dynamic.phases);
-              BinaryIO::read(in, dynamic.steps);
-            }
+          BinaryIO::read(in, dynamic.phases);
+          BinaryIO::read(in, dynamic.steps);
           AssertThrow(in.good() && y.size() == fault.initial_values().size(),
                       ExcMessage("--resume: the checkpoint <" +
                                  checkpoint.path() + "> is damaged."));
@@ -287,11 +285,10 @@ namespace rupture
         events.save(out);
         Utilities::on_root(communicator, [&]() {
           output.save(out);
-          if (dynamics)
-            {
-              BinaryIO::write(out, dynamic.phases);
-              BinaryIO::write(out, dynamic.steps);
-            }
+          // (Written by every run, so that a quasi-dynamic run's checkpoint
+          // can continue with fully dynamic events, and back.)
+          BinaryIO::write(out, dynamic.phases);
+          BinaryIO::write(out, dynamic.steps);
         });
         return out.str();
       };
@@ -326,8 +323,10 @@ namespace rupture
                     << std::flush;
         dynamics->start(clock.t, y);
         // (The first step balances friction at the phase's start, which
-        // the quasi-dynamic step recorded.)
+        // the quasi-dynamic step recorded: counted, not written.)
         dynamics->step();
+        ++clock.steps;
+        ++dynamic.steps;
         while (true)
           {
             dynamics->step();
@@ -337,9 +336,21 @@ namespace rupture
             fault.impose(dynamics->unknowns(),
                          dynamics->slip_rates(),
                          dynamics->tractions());
+            AssertThrow(std::isfinite(fault.max_slip_rate()),
+                        ExcMessage(
+                          "The fully dynamic phase's slip rate is not a "
+                          "number at t = " +
+                          number(tk) +
+                          " s: its steps are unstable. Give a smaller "
+                          "<Boundary integral/Courant number>."));
+            // (Every rank takes the same steps; rank 0's end decides for
+            // all, so that the ranks' collectives stay matched.)
             const bool last =
-              fault.max_slip_rate() < settings.quasi_dynamic_below ||
-              tk >= end_time;
+              dealii::Utilities::MPI::max(int(root &&
+                                              (fault.max_slip_rate() <
+                                                 settings.quasi_dynamic_below ||
+                                               tk >= end_time)),
+                                          communicator);
             const bool ended = events.record(fault, tk);
             output.record(tk,
                           clock.steps,
@@ -388,6 +399,14 @@ namespace rupture
         // at the dynamic phase's slip and state.
         clock.t = dynamics->time();
         y       = dynamics->unknowns();
+        // (Rank 0's, on every rank.)
+        {
+          const int ierr =
+            MPI_Bcast(y.data(), int(y.size()), MPI_DOUBLE, 0, communicator);
+          AssertThrowMPI(ierr);
+          const int error = MPI_Bcast(&clock.t, 1, MPI_DOUBLE, 0, communicator);
+          AssertThrowMPI(error);
+        }
         fault.evaluate(clock.t, y);
         std::vector<double> rate;
         fault.rates(clock.t, y, rate);
@@ -422,6 +441,9 @@ namespace rupture
                           integrator.rejected_steps(),
                           fault,
                           true);
+          // (The checkpoint that fell due in the phase.)
+          else if (settings.checkpoints())
+            write_checkpoint();
         }
       while (!ended_early && t < end_time)
         {

@@ -30,10 +30,15 @@ namespace rupture
      * elastic traction tau_i = tau0_i - (A u)_i / w_i drives the slip rate
      * against the strength S, M_i dV/dt = 2 w_i (tau_i - S); with the rate
      * W of the next half step this is S = T - Z W, T = tau_i + Z V_-,
-     * Z = M_i / (2 w_i dt), and friction holds at t_k at the slip rate
-     * (V_- + W) / 2 with the state evolved up to t_k (the volume method's
-     * split nodes do the same: second order). The state then moves over
-     * the half step at W (Friction::Interface::update_state()).
+     * Z = M_i / (2 w_i dt), and friction holds at t_k at the mean slip
+     * rate V_k = (V_- + W) / 2 with the state evolved up to t_k (the
+     * volume method's split nodes do the same: second order; for a law
+     * whose state depends on the traction, Chester's, the state's step
+     * takes the traction at t_k, first order in that coupling). Written
+     * in V_k, S(|V_k|) = |T + Z V_-| - 2 Z |V_k| with V_k of the sense of
+     * T + Z V_-: W = 2 V_k - V_- may have either sense (a node that stops
+     * or turns back). The state then moves over the step to t_k+1 at the
+     * rate W (Friction::Interface::update_state()).
      *
      * The fault below W stays held at the plates' motion. The far side and
      * the bottom, held in the quasi-dynamic phases, absorb the waves
@@ -115,19 +120,14 @@ namespace rupture
       double
       max_slip_rate() const;
 
-      /// The kinetic energy (per unit length along strike, J/m) of both
-      /// sides at the time of the velocities.
-      double
-      kinetic_energy() const;
-
     private:
-      /// The slip rate W >= 0 of the next half step at node @p i from
-      /// T = @p stick >= 0, with the state @p state and the rate before
-      /// @p before (in the sense of T).
+      /// The size m >= 0 of the mean slip rate at node @p i that solves
+      /// @p target - 2 Z m = S(m) with the state @p state (0 where S(0)
+      /// holds the target), from the first guess @p guess.
       double
       solve_rate(const unsigned int     i,
-                 const double           stick,
-                 const double           before,
+                 const double           target,
+                 const double           guess,
                  const Friction::State &state) const;
 
       std::shared_ptr<const AntiplaneBody> body;

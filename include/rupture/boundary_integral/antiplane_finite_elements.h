@@ -61,6 +61,10 @@ namespace rupture
         /// isotropic). An anisotropic body whose model plane is a plane of
         /// mirror symmetry and C45 = 0: C55 u,xx + C44 u,yy = 0.
         double shear_modulus = 1, vertical_shear_modulus = 0;
+        /// Whether to keep the meshed body after the stiffness is
+        /// computed (body(): the fully dynamic phases need it; otherwise
+        /// its memory is freed).
+        bool keep_body = false;
       };
 
       /// Mesh, factorise and solve (collective). Throws on settings out of
@@ -104,7 +108,8 @@ namespace rupture
       std::string
       description() const override;
 
-      /// The meshed body (for the fully dynamic phases).
+      /// The meshed body (for the fully dynamic phases), if
+      /// Settings::keep_body; null otherwise.
       std::shared_ptr<const AntiplaneBody>
       body() const
       {
