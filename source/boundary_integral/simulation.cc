@@ -304,6 +304,18 @@ namespace rupture
 
       const double end_time = settings.end_time;
 
+      // An event that ended at @p time: counted, the catalogue rewritten.
+      const auto count_event = [&](const double time) {
+        ++clock.n_events;
+        Utilities::on_root(communicator,
+                           [&]() { events.write(fault, directory); });
+        if (root)
+          std::cout << "  event " << clock.n_events
+                    << " ended at t = " << std::setprecision(6) << time / year
+                    << " years\n"
+                    << std::flush;
+      };
+
       // A fully dynamic phase from the state of the step just taken until
       // the largest slip rate falls below <Quasi-dynamic below>; then the
       // quasi-dynamic fault goes on from its slip and state. A checkpoint
@@ -359,16 +371,7 @@ namespace rupture
                           fault,
                           tk >= end_time);
             if (ended)
-              {
-                ++clock.n_events;
-                Utilities::on_root(communicator,
-                                   [&]() { events.write(fault, directory); });
-                if (root)
-                  std::cout << "  event " << clock.n_events
-                            << " ended at t = " << std::setprecision(6)
-                            << tk / year << " years\n"
-                            << std::flush;
-              }
+              count_event(tk);
             const int signal =
               dealii::Utilities::MPI::max(Interruption::requested(),
                                           communicator);
@@ -477,16 +480,7 @@ namespace rupture
                         fault,
                         t >= end_time);
           if (ended)
-            {
-              ++clock.n_events;
-              Utilities::on_root(communicator,
-                                 [&]() { events.write(fault, directory); });
-              if (root)
-                std::cout << "  event " << clock.n_events
-                          << " ended at t = " << std::setprecision(6)
-                          << t / year << " years\n"
-                          << std::flush;
-            }
+            count_event(t);
           if (dynamics && t < end_time &&
               fault.max_slip_rate() >= settings.dynamic_above)
             run_dynamic_phase();
