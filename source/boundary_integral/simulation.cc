@@ -429,21 +429,28 @@ namespace rupture
       // (A checkpoint whose largest slip rate is above the switch's is the
       // start of a dynamic phase that a signal interrupted: it comes
       // first.)
+      // (<Termination/Number of events> reached, and the last row that
+      // then ends the files.)
+      const auto enough_events = [&]() {
+        return settings.max_events > 0 && clock.n_events >= settings.max_events;
+      };
+      const auto record_last = [&]() {
+        output.record(t,
+                      clock.steps,
+                      clock.last_dt,
+                      integrator.rejected_steps(),
+                      fault,
+                      true);
+      };
       bool ended_early = false;
       if (resume && dynamics && t < end_time &&
           fault.max_slip_rate() >= settings.dynamic_above)
         {
           run_dynamic_phase();
           // (As the step that started it would have ended the run.)
-          ended_early =
-            settings.max_events > 0 && clock.n_events >= settings.max_events;
+          ended_early = enough_events();
           if (ended_early)
-            output.record(t,
-                          clock.steps,
-                          clock.last_dt,
-                          integrator.rejected_steps(),
-                          fault,
-                          true);
+            record_last();
           // (The checkpoint that fell due in the phase.)
           else if (settings.checkpoints())
             write_checkpoint();
@@ -492,15 +499,9 @@ namespace rupture
                         << std::flush;
               next_report += 0.1 * end_time;
             }
-          const bool done =
-            settings.max_events > 0 && clock.n_events >= settings.max_events;
+          const bool done = enough_events();
           if (done)
-            output.record(t,
-                          clock.steps,
-                          clock.last_dt,
-                          integrator.rejected_steps(),
-                          fault,
-                          true);
+            record_last();
           // (Rank 0's clock decides for all.)
           const bool minutes_passed = dealii::Utilities::MPI::max(
             int(settings.checkpoint_minutes > 0 &&
